@@ -1,0 +1,78 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#include "esph_state.h"
+
+#include "atom.h"
+#include "error.h"
+#include "modify.h"
+
+#include <string>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHState::ensure(LAMMPS *lmp)
+{
+  if (lmp->modify->get_fix_by_id(FIX_ID)) return;
+  int flag, cols;
+  if (lmp->atom->find_custom("esph_rho", flag, cols) >= 0)
+    lmp->error->all(FLERR, Error::NOLASTLINE,
+                    "ESPH per-atom property esph_rho exists but fix {} does not: it must not be "
+                    "defined by hand",
+                    FIX_ID);
+  // three fixes, so that each data-file line stays below read_data's 256 characters
+  std::string cmd = std::string(FIX_ID) + " all property/atom";
+  if (!lmp->atom->rmass_flag) cmd += " rmass";
+  cmd += " d_esph_rho d_esph_e d_esph_h i_esph_body d_esph_depth ghost yes";
+  lmp->modify->add_fix(cmd);
+  lmp->modify->add_fix(std::string(FIX_ID_STRESS) + " all property/atom d2_esph_s 6 ghost yes");
+  lmp->modify->add_fix(std::string(FIX_ID_NORMAL) + " all property/atom d2_esph_n 3 ghost yes");
+}
+
+/* ---------------------------------------------------------------------- */
+
+ESPHState::ESPHState(LAMMPS *_lmp) :
+    rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr),
+    depth(nullptr), body(nullptr), lmp(_lmp)
+{
+  ensure(lmp);
+  int flag, cols;
+  irho = lmp->atom->find_custom("esph_rho", flag, cols);
+  ie = lmp->atom->find_custom("esph_e", flag, cols);
+  ih = lmp->atom->find_custom("esph_h", flag, cols);
+  is = lmp->atom->find_custom("esph_s", flag, cols);
+  in = lmp->atom->find_custom("esph_n", flag, cols);
+  idepth = lmp->atom->find_custom("esph_depth", flag, cols);
+  ibody = lmp->atom->find_custom("esph_body", flag, cols);
+  if (irho < 0 || ie < 0 || ih < 0 || is < 0 || in < 0 || idepth < 0 || ibody < 0)
+    lmp->error->all(FLERR, Error::NOLASTLINE, "ESPH per-atom state in fix {} is incomplete",
+                    FIX_ID);
+  fetch();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHState::fetch()
+{
+  Atom *atom = lmp->atom;
+  rmass = atom->rmass;
+  rho = atom->dvector[irho];
+  e = atom->dvector[ie];
+  h = atom->dvector[ih];
+  s = atom->darray[is];
+  n = atom->darray[in];
+  depth = atom->dvector[idepth];
+  body = atom->ivector[ibody];
+}

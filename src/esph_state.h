@@ -1,0 +1,58 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+// Per-atom state of the ESPH package, kept in internal fix property/atom instances
+// with the fixed IDs ESPH_STATE, ESPH_STRESS (d2_esph_s) and ESPH_NORMAL (d2_esph_n)
+// (a plugin cannot add an atom style):
+//   rmass          per-atom mass (added only if the atom style lacks it); 0 = boundary particle
+//   d_esph_rho     density
+//   d_esph_e       specific internal energy
+//   d_esph_h       smoothing length
+//   d2_esph_s[6]   deviatoric Cauchy stress, Voigt order xx yy zz xy xz yz
+//   i_esph_body    body ID (particles of different bodies meet through the contact rule)
+//   d2_esph_n[3]   unit outward surface normal (boundary particles: carried; real: eq. 30)
+//   d_esph_depth   depth of a real particle below its body's surface (from boundary particles)
+// The fix is created by the first ESPH style that needs it and is never deleted by them,
+// so redefining a pair style or fix keeps the state. It is restored by read_restart when
+// any ESPH style is defined again afterwards, and written by write_data.
+
+#ifndef LMP_ESPH_STATE_H
+#define LMP_ESPH_STATE_H
+
+namespace LAMMPS_NS {
+class LAMMPS;
+
+class ESPHState {
+ public:
+  static constexpr const char *FIX_ID = "ESPH_STATE";
+  static constexpr const char *FIX_ID_STRESS = "ESPH_STRESS";
+  static constexpr const char *FIX_ID_NORMAL = "ESPH_NORMAL";
+
+  // create the state fix if it does not exist yet
+  static void ensure(LAMMPS *lmp);
+
+  // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
+  explicit ESPHState(LAMMPS *lmp);
+  void fetch();
+
+  double *rmass, *rho, *e, *h, **s, **n, *depth;
+  int *body;
+
+ private:
+  LAMMPS *lmp;
+  int irho, ie, ih, is, in, idepth, ibody;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

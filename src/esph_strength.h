@@ -1,0 +1,61 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+// Hypoelastic deviatoric stress rate with the Jaumann rate (seed paper 2.3).
+// Cauchy convention (tension positive): sigma = -P I + S,
+//   dS/dt = 2 G (D - tr(D)/3 I) + W S - S W,
+//   D = (L + L^T)/2 (eq. 14), W = (L - L^T)/2 (eq. 17), L_ab = d v_a / d x_b.
+// The seed paper's eqs. 16/18 print the spin terms with inconsistent signs and
+// indices; this is the standard objective form (Gray, Monaghan & Swift 2001).
+// Voigt order of the 6 stored components: xx yy zz xy xz yz.
+// Pure math, no LAMMPS dependency: unit-tested alone.
+
+#ifndef LMP_ESPH_STRENGTH_H
+#define LMP_ESPH_STRENGTH_H
+
+#include <Eigen/Core>
+
+namespace ESPH {
+
+inline Eigen::Matrix3d voigt_to_matrix(const double *s)
+{
+  Eigen::Matrix3d m;
+  m << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
+  return m;
+}
+
+inline void matrix_to_voigt(const Eigen::Matrix3d &m, double *s)
+{
+  s[0] = m(0, 0);
+  s[1] = m(1, 1);
+  s[2] = m(2, 2);
+  s[3] = m(0, 1);
+  s[4] = m(0, 2);
+  s[5] = m(1, 2);
+}
+
+/* Jaumann-rate deviatoric stress rate for velocity gradient L, stress S, shear modulus G */
+
+inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, double *dsdt)
+{
+  const Eigen::Matrix3d D = 0.5 * (L + L.transpose());
+  const Eigen::Matrix3d W = 0.5 * (L - L.transpose());
+  const Eigen::Matrix3d S = voigt_to_matrix(s);
+  Eigen::Matrix3d rate = 2.0 * G * D + W * S - S * W;
+  rate.diagonal().array() -= 2.0 * G * D.trace() / 3.0;
+  matrix_to_voigt(rate, dsdt);
+}
+
+}    // namespace ESPH
+
+#endif

@@ -1,0 +1,356 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Non-mass boundary particles carrying unit outward normals (seed paper
+   section 4.2). Generated once on the surfaces of the bodies made of the
+   real particles in the fix group, or taken from a user-supplied group of
+   zero-mass particles with given normals. Their motion, the rotation of
+   their normals and the interpolation of their fields happen in the
+   regular per-step flow of pair esph/solid and fix esph/integrate.
+------------------------------------------------------------------------- */
+
+#include "fix_esph_boundary.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+enum { GENERATE, GIVEN };
+
+// a particle is on the surface when its kernel-weighted neighbour centroid is off
+// by more than this fraction of the spacing (first layer of a cubic lattice: 0.18)
+static constexpr double SURFACE_OFFSET = 0.05;
+
+/* ---------------------------------------------------------------------- */
+
+FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), state(nullptr)
+{
+  scalar_flag = 1;
+  extscalar = 1;
+  global_freq = 1;
+
+  spacing = 0.0;
+  btype = 0;
+  mode = GENERATE;
+  ncreated = 0;
+
+  int iarg = 3;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "spacing") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary spacing", error);
+      spacing = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (spacing <= 0.0)
+        error->all(FLERR, iarg + 1, "Fix esph/boundary spacing must be > 0, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "type") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary type", error);
+      btype = utils::expand_type_int(FLERR, arg[iarg + 1], Atom::ATOM, lmp);
+      if (btype < 1 || btype > atom->ntypes)
+        error->all(FLERR, iarg + 1, "Fix esph/boundary type {} is not a valid atom type (1-{})",
+                   arg[iarg + 1], atom->ntypes);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "given") == 0) {
+      mode = GIVEN;
+      iarg += 1;
+    } else {
+      error->all(FLERR, iarg, "Unknown fix esph/boundary keyword: {}", arg[iarg]);
+    }
+  }
+  if (mode == GENERATE && spacing == 0.0)
+    error->all(FLERR, "Fix esph/boundary needs the particle spacing: spacing <value>");
+
+  state = new ESPHState(lmp);
+  if (mode == GENERATE) generate();
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixESPHBoundary::~FixESPHBoundary()
+{
+  delete state;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixESPHBoundary::setmask()
+{
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   check the boundary particles: unit normals, a body, and every body with
+   real particles in the group has boundary particles
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::init()
+{
+  state->fetch();
+  const int *mask = atom->mask;
+  std::vector<int> real_bodies, bnd_bodies;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (state->rmass[i] > 0.0) {
+      real_bodies.push_back(state->body[i]);
+      continue;
+    }
+    const double *n = state->n[i];
+    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (fabs(n2 - 1.0) > 1.0e-6)
+      error->one(FLERR, Error::NOLASTLINE,
+                 "Boundary particle {} of fix esph/boundary has a normal of length {}, not a unit "
+                 "normal",
+                 atom->tag[i], sqrt(n2));
+    bnd_bodies.push_back(state->body[i]);
+  }
+  // global sets of bodies
+  auto gather = [this](std::vector<int> &v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    int n = v.size();
+    std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    int total = 0;
+    for (int p = 0; p < comm->nprocs; p++) {
+      displs[p] = total;
+      total += counts[p];
+    }
+    std::vector<int> all(total);
+    MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    v = all;
+  };
+  gather(real_bodies);
+  gather(bnd_bodies);
+  if (bnd_bodies.empty())
+    error->all(FLERR, Error::NOLASTLINE, "Fix esph/boundary group {} has no boundary particles",
+               group->names[igroup]);
+  for (int b : real_bodies)
+    if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b))
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Body {} has real particles but no boundary particles in fix esph/boundary", b);
+  for (int b : bnd_bodies)
+    if (!real_bodies.empty() && !std::binary_search(real_bodies.begin(), real_bodies.end(), b))
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Fix esph/boundary has boundary particles of body {} which has no real particles",
+                 b);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixESPHBoundary::compute_scalar()
+{
+  state->fetch();
+  const int *mask = atom->mask;
+  bigint n = 0, total;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && state->rmass[i] == 0.0) n++;
+  MPI_Allreduce(&n, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  return (double) total;
+}
+
+/* ----------------------------------------------------------------------
+   generate boundary particles on the surfaces of the bodies in the group.
+   A real particle is on the surface when the kernel-weighted centroid of its
+   same-body neighbours (support 2 x spacing) is off-centre; its outward
+   normal is minus that offset. One boundary particle is placed per surface
+   particle at half a spacing outside it (on a face, an edge or a corner of
+   a lattice body). All group particles are gathered on every rank once.
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::generate()
+{
+  state->fetch();
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+
+  // existing boundary particles in the group (e.g. after read_restart): reuse them
+  bigint nexist = 0, nexist_all;
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && state->rmass[i] == 0.0) nexist++;
+  MPI_Allreduce(&nexist, &nexist_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nexist_all > 0) {
+    if (comm->me == 0)
+      utils::logmesg(lmp, "Fix esph/boundary: using {} existing boundary particles\n", nexist_all);
+    return;
+  }
+
+  // gather x and body of all real group particles
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
+    mine.push_back(atom->x[i][0]);
+    mine.push_back(atom->x[i][1]);
+    mine.push_back(atom->x[i][2]);
+    mine.push_back((double) state->body[i]);
+  }
+  int nmine = mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  const int nall = total / 4;
+  if (nall == 0) error->all(FLERR, "Fix esph/boundary group {} has no real particles", id);
+
+  // periodic images near the box faces
+  const double cut = ESPH::KERNEL_SUPPORT * spacing;
+  std::vector<double> pts;
+  pts.reserve(all.size());
+  const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
+  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  for (int k = 0; k < nall; k++) {
+    const double *p = &all[4 * k];
+    int sh[3][3], ns[3];
+    for (int d = 0; d < 3; d++) {
+      ns[d] = 0;
+      sh[d][ns[d]++] = 0;
+      if (per[d] && p[d] < lo[d] + cut) sh[d][ns[d]++] = 1;
+      if (per[d] && p[d] > hi[d] - cut) sh[d][ns[d]++] = -1;
+    }
+    for (int a = 0; a < ns[0]; a++)
+      for (int b = 0; b < ns[1]; b++)
+        for (int c = 0; c < ns[2]; c++) {
+          pts.push_back(p[0] + sh[0][a] * prd[0]);
+          pts.push_back(p[1] + sh[1][b] * prd[1]);
+          pts.push_back(p[2] + sh[2][c] * prd[2]);
+          pts.push_back(p[3]);
+        }
+  }
+  const int npts = pts.size() / 4;
+
+  // hash grid with cell size = support radius
+  auto cellkey = [cut](double x, double y, double z) {
+    const long long ix = (long long) floor(x / cut) + (1 << 20);
+    const long long iy = (long long) floor(y / cut) + (1 << 20);
+    const long long iz = (long long) floor(z / cut) + (1 << 20);
+    return (ix << 42) | (iy << 21) | iz;
+  };
+  std::unordered_map<long long, std::vector<int>> grid;
+  for (int k = 0; k < npts; k++)
+    grid[cellkey(pts[4 * k], pts[4 * k + 1], pts[4 * k + 2])].push_back(k);
+
+  const int dim = domain->dimension;
+  const double norm = ESPH::kernel_norm(ESPH::CUBIC, 3, spacing);
+  const double hinv = 1.0 / spacing;
+
+  std::vector<double> newx, newn;
+  std::vector<int> src;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
+    const double *xi = atom->x[i];
+    const double bi = (double) state->body[i];
+    double c[3] = {0.0, 0.0, 0.0}, wsum = 0.0;
+    for (int a = -1; a <= 1; a++)
+      for (int b = -1; b <= 1; b++)
+        for (int cc = -1; cc <= 1; cc++) {
+          auto it = grid.find(cellkey(xi[0] + a * cut, xi[1] + b * cut, xi[2] + cc * cut));
+          if (it == grid.end()) continue;
+          for (int k : it->second) {
+            const double *p = &pts[4 * k];
+            if (p[3] != bi) continue;
+            const double d[3] = {p[0] - xi[0], p[1] - xi[1], p[2] - xi[2]};
+            double w, dw;
+            if (!ESPH::kernel_eval(ESPH::CUBIC, 3, norm, hinv,
+                                   sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), w, dw))
+              continue;
+            c[0] += w * d[0];
+            c[1] += w * d[1];
+            c[2] += w * d[2];
+            wsum += w;
+          }
+        }
+    if (dim == 2) c[2] = 0.0;
+    const double off = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / wsum;
+    if (off < SURFACE_OFFSET * spacing) continue;
+    const double len = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    const double n[3] = {-c[0] / len, -c[1] / len, -c[2] / len};
+    // half a spacing outside along each lattice direction the normal points to
+    const double nmax = MAX(fabs(n[0]), MAX(fabs(n[1]), fabs(n[2])));
+    for (int d = 0; d < 3; d++) {
+      newx.push_back(xi[d] + 0.5 * spacing * n[d] / nmax);
+      newn.push_back(n[d]);
+    }
+    src.push_back(i);
+  }
+
+  // create the boundary particles; they migrate to their owners at the next setup
+  const int nprev = atom->nlocal;
+  const int nnew = src.size();
+  for (int k = 0; k < nnew; k++) {
+    double xnew[3] = {newx[3 * k], newx[3 * k + 1], newx[3 * k + 2]};
+    for (int d = 0; d < 3; d++)
+      if (!per[d] && (xnew[d] < lo[d] || xnew[d] >= hi[d]))
+        error->one(FLERR,
+                   "Fix esph/boundary: boundary particle of atom {} at ({} {} {}) lies outside the "
+                   "non-periodic box; enlarge the box by half a spacing around the bodies",
+                   atom->tag[src[k]], xnew[0], xnew[1], xnew[2]);
+    const int s = src[k];
+    atom->avec->create_atom(btype > 0 ? btype : atom->type[s], xnew);
+  }
+  atom->data_fix_compute_variable(nprev, atom->nlocal);
+  state->fetch();
+  for (int k = 0; k < nnew; k++) {
+    const int m = nprev + k;
+    const int s = src[k];
+    atom->mask[m] = atom->mask[s];
+    atom->image[m] = atom->image[s];
+    for (int d = 0; d < 3; d++) {
+      atom->v[m][d] = atom->v[s][d];
+      state->n[m][d] = newn[3 * k + d];
+    }
+    state->rmass[m] = 0.0;
+    state->body[m] = state->body[s];
+    state->rho[m] = 0.0;
+    state->e[m] = 0.0;
+    state->h[m] = state->h[s];
+    state->depth[m] = 0.0;
+    for (int d = 0; d < 6; d++) state->s[m][d] = 0.0;
+  }
+
+  bigint nblocal = atom->nlocal;
+  MPI_Allreduce(&nblocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->tag_enable) atom->tag_extend();
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  bigint nn = nnew;
+  MPI_Allreduce(&nn, &ncreated, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix esph/boundary: created {} boundary particles\n", ncreated);
+}

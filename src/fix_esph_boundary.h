@@ -1,0 +1,48 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(esph/boundary,FixESPHBoundary);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_ESPH_BOUNDARY_H
+#define LMP_FIX_ESPH_BOUNDARY_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixESPHBoundary : public Fix {
+ public:
+  FixESPHBoundary(class LAMMPS *, int, char **);
+  ~FixESPHBoundary() override;
+  int setmask() override;
+  void init() override;
+  double compute_scalar() override;
+
+ protected:
+  double spacing;    // particle spacing of the bodies
+  int btype;         // type of generated boundary particles (0: type of the source particle)
+  int mode;          // GENERATE or GIVEN
+  bigint ncreated;
+  class ESPHState *state;
+
+  void generate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,66 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(esph/integrate,FixESPHIntegrate);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_ESPH_INTEGRATE_H
+#define LMP_FIX_ESPH_INTEGRATE_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixESPHIntegrate : public Fix {
+ public:
+  FixESPHIntegrate(class LAMMPS *, int, char **);
+  ~FixESPHIntegrate() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void end_of_step() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  double memory_usage() override;
+
+  // predicted end-of-step state, per atom: made in initial_integrate, read by the pair
+  // during the force computation; it migrates with the atoms (exchange, sorting)
+  static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, NPRED = 13;
+  double **pred;
+  int move;    // 0: only the SPH state is integrated, motion comes from another fix
+
+ protected:
+  double dtv, dtf, dth;
+  double cfl;             // CFL safety factor, 0 = fixed time step
+  double dtmin, dtmax;    // bounds of the adaptive step
+  int ncontact;               // interacting cross-body pairs at the last step
+  double tfirst, tlast;       // first and last time with contact
+  class PairESPHSolid *pair;
+  class ESPHState *state;
+
+  void adapt_dt();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,1025 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   SPH elastic solid with Jaumann-rate hypoelasticity, Mie-Grueneisen EOS,
+   Monaghan-Gingold viscosity and the contact algorithm of
+   Min, Lee, Kim & Lee, KSME Int. J. 14 (2000).
+------------------------------------------------------------------------- */
+
+#include "pair_esph_solid.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_contact.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "esph_strength.h"
+#include "fix.h"
+#include "fix_esph_integrate.h"
+#include "force.h"
+#include "info.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace ESPH;
+
+// slots of the accumulator array acc[i][*]
+// real particles
+static constexpr int A_G = 0;         // 0..8: G = sum_j m_j (v_j - v_i) (x) grad_i W_ij
+static constexpr int A_AVHEAT = 9;    // viscous heating
+static constexpr int A_HEAT = 10;     // artificial heat transfer
+static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
+static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
+static constexpr int A_WSUM = 15;     // sum_k W_ik
+// boundary particles
+static constexpr int B_A = 0;         // 0..8: sum_p V_p v_p (x) grad_k W_kp
+static constexpr int B_B = 9;         // 9..11: sum_p V_p grad_k W_kp
+static constexpr int B_VSUM = 12;     // 12..14: sum_p V_p W_kp v_p
+static constexpr int B_WSUM = 15;     // sum_p V_p W_kp
+static constexpr int B_M = 16;        // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
+
+// slots of the hoisted array hq[i][*]
+static constexpr int Q_V = 0;         // 0..2 predicted velocity
+static constexpr int Q_RHO = 3;
+static constexpr int Q_C = 4;
+static constexpr int Q_H = 5;
+static constexpr int Q_A = 6;         // 6..11 sigma / rho^2 (Voigt)
+static constexpr int Q_N = 12;        // 12..14 normal
+static constexpr int Q_DEPTH = 15;
+static constexpr int Q_E = 16;
+static constexpr int Q_ZETA = 17;
+
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS };
+
+static constexpr double BIG_DT = 1.0e300;
+
+/* ---------------------------------------------------------------------- */
+
+PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
+    Pair(lmp), eos(nullptr), shear(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr),
+    drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr), bspin(nullptr),
+    nboundary(0), state(nullptr), fix_int(nullptr)
+{
+  single_enable = 0;
+  restartinfo = 0;
+  one_coeff = 0;
+  manybody_flag = 0;
+  comm_forward = NHQ;
+  comm_reverse = NACC;
+
+  h0 = 0.0;
+  cut_global = 0.0;
+  kernel = CUBIC;
+  dim = domain->dimension;
+  alpha = beta = 1.0;
+  eps = 0.1;
+  heat_flag = 0;
+  g1 = g2 = 0.0;
+  hvar_flag = 0;
+  hmax = 1.0;
+  contact = CONTACT_SOLID;
+  gaptol = 0.01;
+
+  pred_valid = 0;
+  normals_valid = 0;
+  dt_cfl = 0.0;
+  ncontact_pairs = 0;
+  comm_stage = COMM_HOIST;
+  nforward = nreverse = 0;
+
+  state = new ESPHState(lmp);
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairESPHSolid::~PairESPHSolid()
+{
+  if (copymode) return;
+  delete state;
+  memory->destroy(acc);
+  memory->destroy(hq);
+  memory->destroy(drho);
+  memory->destroy(de);
+  memory->destroy(dh);
+  memory->destroy(ds);
+  memory->destroy(bvel);
+  memory->destroy(bspin);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    delete[] eos;
+    memory->destroy(shear);
+    memory->destroy(matset);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes + 1;
+  memory->create(setflag, n, n, "pair:setflag");
+  memory->create(cutsq, n, n, "pair:cutsq");
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) setflag[i][j] = 0;
+  eos = new EOS[n];
+  memory->create(shear, n, "pair:shear");
+  memory->create(matset, n, "pair:matset");
+  for (int i = 0; i < n; i++) {
+    matset[i] = 0;
+    shear[i] = 0.0;
+    eos[i] = EOS{EOS_LINEAR, 0.0, 0.0, 0.0, 0.0, 0.0};
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_style esph/solid h keyword value ...
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::settings(int narg, char **arg)
+{
+  if (narg < 1) utils::missing_cmd_args(FLERR, "pair_style esph/solid", error);
+  h0 = utils::numeric(FLERR, arg[0], false, lmp);
+  if (h0 <= 0.0)
+    error->all(FLERR, 1, "Pair esph/solid smoothing length h must be > 0, got {}", arg[0]);
+
+  int iarg = 1;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "kernel") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid kernel", error);
+      if (strcmp(arg[iarg + 1], "cubic") == 0)
+        kernel = CUBIC;
+      else if (strcmp(arg[iarg + 1], "wendland") == 0)
+        kernel = WENDLAND;
+      else
+        error->all(FLERR, iarg + 2, "Unknown pair esph/solid kernel {}: expected cubic or wendland",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "dimension") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid dimension", error);
+      dim = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (dim < 1 || dim > domain->dimension)
+        error->all(FLERR, iarg + 2,
+                   "Pair esph/solid dimension must be 1 .. {} (the box dimension), got {}",
+                   domain->dimension, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "visc") == 0) {
+      if (iarg + 3 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid visc", error);
+      alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      beta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      eps = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      if (alpha < 0.0 || beta < 0.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid visc alpha and beta must be >= 0");
+      if (eps <= 0.0) error->all(FLERR, iarg + 4, "Pair esph/solid visc epsilon must be > 0");
+      iarg += 4;
+    } else if (strcmp(arg[iarg], "heat") == 0) {
+      if (iarg + 2 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid heat", error);
+      g1 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      g2 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (g1 < 0.0 || g2 < 0.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid heat g1 and g2 must be >= 0");
+      heat_flag = (g1 > 0.0 || g2 > 0.0) ? 1 : 0;
+      iarg += 3;
+    } else if (strcmp(arg[iarg], "hvar") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid hvar", error);
+      hmax = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (hmax < 1.0)
+        error->all(FLERR, iarg + 2,
+                   "Pair esph/solid hvar needs the largest allowed h/h0 (>= 1), got {}",
+                   arg[iarg + 1]);
+      hvar_flag = 1;
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "contact") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid contact", error);
+      if (strcmp(arg[iarg + 1], "off") == 0)
+        contact = CONTACT_OFF;
+      else if (strcmp(arg[iarg + 1], "solid") == 0)
+        contact = CONTACT_SOLID;
+      else if (strcmp(arg[iarg + 1], "paper") == 0)
+        contact = CONTACT_PAPER;
+      else
+        error->all(FLERR, iarg + 2,
+                   "Unknown pair esph/solid contact rule {}: expected off, solid or paper",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "gap/tol") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
+      gaptol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (gaptol < 0.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid gap/tol must be >= 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else {
+      error->all(FLERR, iarg + 1, "Unknown pair_style esph/solid keyword: {}", arg[iarg]);
+    }
+  }
+  cut_global = KERNEL_SUPPORT * h0 * hmax;
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I I rho0 value shear value eos linear K
+   pair_coeff I I rho0 value shear value eos mie/gruneisen c0 s gamma0
+   materials are per type: I and J must be the same type or range
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::coeff(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "Incorrect args for pair coefficients" + utils::errorurl(21));
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  if (ilo != jlo || ihi != jhi)
+    error->all(FLERR, 1,
+               "Pair esph/solid materials are per atom type: use pair_coeff I I (or * *), not "
+               "{} {}",
+               arg[0], arg[1]);
+
+  double rho0 = -1.0, G = -1.0;
+  EOS eq{-1, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int iarg = 2;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "rho0") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid rho0", error);
+      rho0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (rho0 <= 0.0)
+        error->all(FLERR, iarg + 1, "Pair esph/solid rho0 must be > 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "shear") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid shear", error);
+      G = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (G < 0.0)
+        error->all(FLERR, iarg + 1, "Pair esph/solid shear modulus must be >= 0, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "eos") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos", error);
+      if (strcmp(arg[iarg + 1], "linear") == 0) {
+        if (iarg + 2 >= narg)
+          utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos linear", error);
+        eq.type = EOS_LINEAR;
+        eq.K = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+        if (eq.K <= 0.0)
+          error->all(FLERR, iarg + 3, "Pair esph/solid eos linear bulk modulus must be > 0, got {}",
+                     arg[iarg + 2]);
+        iarg += 3;
+      } else if (strcmp(arg[iarg + 1], "mie/gruneisen") == 0) {
+        if (iarg + 4 >= narg)
+          utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos mie/gruneisen", error);
+        eq.type = EOS_MIE_GRUNEISEN;
+        eq.c0 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+        eq.s = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+        eq.gamma0 = utils::numeric(FLERR, arg[iarg + 4], false, lmp);
+        if (eq.c0 <= 0.0)
+          error->all(FLERR, iarg + 3, "Pair esph/solid eos mie/gruneisen c0 must be > 0, got {}",
+                     arg[iarg + 2]);
+        if (eq.s < 0.0)
+          error->all(FLERR, iarg + 4, "Pair esph/solid eos mie/gruneisen s must be >= 0, got {}",
+                     arg[iarg + 3]);
+        if (eq.gamma0 < 0.0)
+          error->all(FLERR, iarg + 5,
+                     "Pair esph/solid eos mie/gruneisen gamma0 must be >= 0, got {}",
+                     arg[iarg + 4]);
+        iarg += 5;
+      } else {
+        error->all(FLERR, iarg + 2,
+                   "Unknown pair esph/solid eos {}: expected linear or mie/gruneisen",
+                   arg[iarg + 1]);
+      }
+    } else {
+      error->all(FLERR, iarg, "Unknown pair_coeff esph/solid keyword: {}", arg[iarg]);
+    }
+  }
+  if (rho0 < 0.0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the rho0 keyword");
+  if (G < 0.0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the shear keyword");
+  if (eq.type < 0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the eos keyword");
+  eq.rho0 = rho0;
+
+  for (int i = ilo; i <= ihi; i++) {
+    eos[i] = eq;
+    shear[i] = G;
+    matset[i] = 1;
+  }
+  // every pair of types with materials interacts
+  int count = 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (matset[i] && matset[j]) {
+        setflag[i][j] = 1;
+        count++;
+      }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients" + utils::errorurl(21));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::init_style()
+{
+  if (force->mvv2e != 1.0 || force->ftm2v != 1.0 || force->nktv2p != 1.0)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid requires a unit style without conversion factors (si, cgs, micro, "
+               "nano or lj), not units {}",
+               update->unit_style);
+  if (!atom->rmass_flag)
+    error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
+  auto fixes = modify->get_fix_by_style("^esph/integrate$");
+  if (fixes.empty())
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid requires fix esph/integrate to advance the SPH state");
+  fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);
+  if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
+    // contact needs boundary particles only when there is more than one body
+    int lmin = 1 << 30, lmax = -(1 << 30);
+    state->fetch();
+    const int *body = state->body;
+    for (int i = 0; i < atom->nlocal; i++) {
+      lmin = MIN(lmin, body[i]);
+      lmax = MAX(lmax, body[i]);
+    }
+    int gmin, gmax;
+    MPI_Allreduce(&lmin, &gmin, 1, MPI_INT, MPI_MIN, world);
+    MPI_Allreduce(&lmax, &gmax, 1, MPI_INT, MPI_MAX, world);
+    if (gmin != gmax)
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Pair esph/solid contact {} between bodies {}..{} requires fix esph/boundary "
+                 "(boundary particles with normals); use contact off for traditional SPH",
+                 contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
+  }
+  neighbor->add_request(this);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairESPHSolid::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, Error::NOLASTLINE,
+               "All pair esph/solid materials are not set (use pair_coeff I I rho0 ... for every "
+               "type). Status:\n" +
+                   Info::get_pair_coeff_status(lmp));
+  return cut_global;
+}
+
+/* ----------------------------------------------------------------------
+   called at the start of each run: no prediction, fill unset density and h
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::setup()
+{
+  pred_valid = 0;
+  normals_valid = 0;
+  state->fetch();
+  const int nlocal = atom->nlocal;
+  const int *type = atom->type;
+  for (int i = 0; i < nlocal; i++) {
+    if (state->rho[i] == 0.0) state->rho[i] = eos[type[i]].rho0;
+    if (state->h[i] == 0.0) state->h[i] = h0;
+    if (state->h[i] > cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12))
+      error->one(FLERR, Error::NOLASTLINE,
+                 "Atom {} has smoothing length {} larger than the pair esph/solid cutoff allows "
+                 "({}): increase hvar",
+                 atom->tag[i], state->h[i], cut_global / KERNEL_SUPPORT);
+    if (state->rmass[i] < 0.0)
+      error->one(FLERR, Error::NOLASTLINE, "Atom {} has negative mass {}", atom->tag[i],
+                 state->rmass[i]);
+    if (state->rmass[i] == 0.0) {
+      const double *n = state->n[i];
+      if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] < 0.25)
+        error->one(FLERR, Error::NOLASTLINE,
+                   "Atom {} has zero mass but no boundary normal: zero-mass particles must be "
+                   "boundary particles of fix esph/boundary",
+                   atom->tag[i]);
+    }
+  }
+  bigint nb = 0;
+  for (int i = 0; i < nlocal; i++)
+    if (state->rmass[i] == 0.0) nb++;
+  MPI_Allreduce(&nb, &nboundary, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+
+  grow_work();
+  // rates start at zero until the first compute
+  for (int i = 0; i < nmax; i++) {
+    drho[i] = de[i] = dh[i] = 0.0;
+    for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::grow_work()
+{
+  if (atom->nmax <= nmax) return;
+  const int old = nmax;
+  nmax = atom->nmax;
+  memory->grow(acc, nmax, NACC, "pair:acc");
+  memory->grow(hq, nmax, NHQ, "pair:hq");
+  memory->grow(drho, nmax, "pair:drho");
+  memory->grow(de, nmax, "pair:de");
+  memory->grow(dh, nmax, "pair:dh");
+  memory->grow(ds, nmax, 6, "pair:ds");
+  memory->grow(bvel, nmax, 3, "pair:bvel");
+  memory->grow(bspin, nmax, 3, "pair:bspin");
+  for (int i = old; i < nmax; i++) {
+    drho[i] = de[i] = dh[i] = 0.0;
+    for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+    for (int k = 0; k < 3; k++) bvel[i][k] = bspin[i][k] = 0.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per-particle work hoisted out of the pair loop: predicted state, EOS,
+   sigma/rho^2, sound speed; local CFL estimate
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::hoist()
+{
+  const int nlocal = atom->nlocal;
+  const int *type = atom->type;
+  double **v = atom->v;
+  const double *rmass = state->rmass;
+  // inside a step the integrator has predicted the state at its end
+  double **pred = pred_valid ? fix_int->pred : nullptr;
+
+  double dtmin = BIG_DT;
+  for (int i = 0; i < nlocal; i++) {
+    double *q = hq[i];
+    const double *p = pred ? pred[i] : nullptr;
+    // with fix esph/integrate move no another fix has set v at the end of the step
+    const double *vi = (p && fix_int->move) ? p + FixESPHIntegrate::P_V : v[i];
+    q[Q_V] = vi[0];
+    q[Q_V + 1] = vi[1];
+    q[Q_V + 2] = vi[2];
+    q[Q_N] = state->n[i][0];
+    q[Q_N + 1] = state->n[i][1];
+    q[Q_N + 2] = state->n[i][2];
+    q[Q_DEPTH] = state->depth[i];
+    if (rmass[i] > 0.0) {
+      const int itype = type[i];
+      const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
+      const double e = p ? p[FixESPHIntegrate::P_E] : state->e[i];
+      const double h = p ? p[FixESPHIntegrate::P_H] : state->h[i];
+      const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
+      double P, c2;
+      eos[itype].compute(rho, e, P, c2);
+      if (c2 < 0.0) c2 = 0.0;
+      const double c = sqrt(c2);
+      const double inv = 1.0 / (rho * rho);
+      q[Q_RHO] = rho;
+      q[Q_C] = c;
+      q[Q_H] = h;
+      q[Q_A] = (sp[0] - P) * inv;
+      q[Q_A + 1] = (sp[1] - P) * inv;
+      q[Q_A + 2] = (sp[2] - P) * inv;
+      q[Q_A + 3] = sp[3] * inv;
+      q[Q_A + 4] = sp[4] * inv;
+      q[Q_A + 5] = sp[5] * inv;
+      q[Q_E] = e;
+      if (heat_flag) {
+        const double divv = p ? p[FixESPHIntegrate::P_DIVV] : -drho[i] / rho;
+        q[Q_ZETA] = g1 * h * c + g2 * h * h * (fabs(divv) - divv);
+      } else {
+        q[Q_ZETA] = 0.0;
+      }
+      // CFL with the longitudinal wave speed
+      const double cl = sqrt(c2 + 4.0 * shear[itype] / (3.0 * rho));
+      const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+      const double dti = h / (cl + vmag);
+      if (dti < dtmin) dtmin = dti;
+    } else {
+      q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
+      q[Q_H] = state->h[i];
+      for (int k = 0; k < 6; k++) q[Q_A + k] = 0.0;
+    }
+  }
+  dt_cfl = dtmin;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  grow_work();
+  state->fetch();
+
+  const int nall = atom->nlocal + atom->nghost;
+  const int bnd = (nboundary > 0);
+
+  // forward communication of what neighbours need, in one message
+  nforward = 12 + (bnd ? 4 : 0) + (heat_flag ? 2 : 0);
+  if (bnd && !normals_valid) compute_normals();
+  hoist();
+  comm_stage = COMM_HOIST;
+  comm->forward_comm(this, nforward);
+
+  nreverse = bnd ? NACC : 11;    // without boundary particles only G, heating
+  for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
+
+  ncontact_pairs = 0;
+  if (bnd)
+    pair_loop<1>();
+  else
+    pair_loop<0>();
+
+  if (force->newton_pair) {
+    comm_stage = COMM_ACC;
+    comm->reverse_comm(this, nreverse);
+  }
+  finalize(eflag);
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop: one pass over the half neighbour list
+   real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
+   real-real other body: contact rule (section 4.3), normal components only
+   real-boundary same body: interpolation to the boundary particle (4.2) and
+     the real particle's normal sums (eq. 30)
+------------------------------------------------------------------------- */
+
+template <int BND> void PairESPHSolid::pair_loop()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+
+  // constant h: kernel normalisation once
+  const double norm0 = kernel_norm(kernel, dim, h0);
+  const double hinv0 = 1.0 / h0;
+  const double gap_tol = gaptol * h0;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double mi = rmass[i];
+    const int bi = body[i];
+    const double *qi = hq[i];
+    double *ai = acc[i];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      const double mj = rmass[j];
+      if (BND && mi == 0.0 && mj == 0.0) continue;
+      const double *qj = hq[j];
+
+      double hij, norm, hinv;
+      if (hvar_flag) {
+        hij = 0.5 * (qi[Q_H] + qj[Q_H]);
+        hinv = 1.0 / hij;
+        norm = kernel_norm(kernel, dim, hij);
+      } else {
+        hij = h0;
+        hinv = hinv0;
+        norm = norm0;
+      }
+      double w, dw;
+      if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
+      const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+      const int jown = (newton_pair || j < nlocal);
+
+      if (BND && (mi == 0.0 || mj == 0.0)) {
+        // boundary particle k and real particle p of the same body
+        if (bi != body[j]) continue;
+        int k, p;
+        double sgn;
+        if (mi == 0.0) {
+          k = i;
+          p = j;
+          sgn = 1.0;
+        } else {
+          k = j;
+          p = i;
+          sgn = -1.0;
+        }
+        const double *qp = hq[p];
+        const double *qk = hq[k];
+        if (k < nlocal || newton_pair || k == i) {
+          // grad_k W_kp = sgn * g
+          double *ak = acc[k];
+          const double Vp = rmass[p] / qp[Q_RHO];
+          const double gk[3] = {sgn * g[0], sgn * g[1], sgn * g[2]};
+          for (int a = 0; a < 3; a++) {
+            const double va = Vp * qp[Q_V + a];
+            ak[B_A + 3 * a] += va * gk[0];
+            ak[B_A + 3 * a + 1] += va * gk[1];
+            ak[B_A + 3 * a + 2] += va * gk[2];
+            ak[B_B + a] += Vp * gk[a];
+            ak[B_VSUM + a] += Vp * w * qp[Q_V + a];
+            // x_p - x_k = -sgn * dx
+            const double xa = -sgn * Vp * dx[a];
+            ak[B_M + 3 * a] += xa * gk[0];
+            ak[B_M + 3 * a + 1] += xa * gk[1];
+            ak[B_M + 3 * a + 2] += xa * gk[2];
+          }
+          ak[B_WSUM] += Vp * w;
+        }
+        if (p < nlocal || newton_pair || p == i) {
+          double *ap = acc[p];
+          // x_k - x_p = -sgn * dx ... dx = x_i - x_j; if k == i: x_k - x_p = dx
+          const double dkp[3] = {sgn * dx[0], sgn * dx[1], sgn * dx[2]};
+          const double *nk = qk + Q_N;
+          ap[A_NSUM] += w * nk[0];
+          ap[A_NSUM + 1] += w * nk[1];
+          ap[A_NSUM + 2] += w * nk[2];
+          ap[A_DSUM] += w * (dkp[0] * nk[0] + dkp[1] * nk[1] + dkp[2] * nk[2]);
+          ap[A_WSUM] += w;
+        }
+        continue;
+      }
+
+      // two real particles
+      double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
+      const double *Ai = qi + Q_A;
+      const double *Aj = qj + Q_A;
+      const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
+                           Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
+      double Tg[3] = {T[0] * g[0] + T[3] * g[1] + T[4] * g[2],
+                      T[3] * g[0] + T[1] * g[1] + T[5] * g[2],
+                      T[4] * g[0] + T[5] * g[1] + T[2] * g[2]};
+      const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
+      double nc[3] = {0.0, 0.0, 0.0};
+      double vn = 0.0, xn = 0.0;
+      if (cross) {
+        contact_normal(qi + Q_N, qj + Q_N, dx, nc);
+        vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
+        xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
+        // only the normal relative velocity couples across the interface
+        vij[0] = vn * nc[0];
+        vij[1] = vn * nc[1];
+        vij[2] = vn * nc[2];
+      }
+
+      // Monaghan-Gingold artificial viscosity (eqs. 4-7)
+      const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
+      double pi_ij = 0.0;
+      if (vr < 0.0) {
+        const double mu = hij * vr / (rsq + eps * hij * hij);
+        pi_ij = (-alpha * 0.5 * (qi[Q_C] + qj[Q_C]) * mu + beta * mu * mu) /
+            (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
+      }
+      const double mm = mi * mj;
+      double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
+                      mm * (Tg[2] - pi_ij * g[2])};
+
+      if (cross) {
+        double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
+        const double gap = contact_gap(dx, nc, qi[Q_DEPTH], qj[Q_DEPTH]);
+        if (!contact_gate(contact, gap, gap_tol, vn, xn, fn)) continue;
+        if (contact == CONTACT_SOLID && fn > 0.0) fn = 0.0;    // no tension across contact
+        ff[0] = fn * nc[0];
+        ff[1] = fn * nc[1];
+        ff[2] = fn * nc[2];
+        ncontact_pairs++;
+      }
+
+      fxi += ff[0];
+      fyi += ff[1];
+      fzi += ff[2];
+
+      // G = sum_j m_j (v_j - v_i) (x) grad_i W, for i and j alike
+      const double vg = vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2];
+      const double avh = 0.5 * pi_ij * vg;
+      for (int a = 0; a < 3; a++) {
+        const double wa = -vij[a];
+        ai[A_G + 3 * a] += mj * wa * g[0];
+        ai[A_G + 3 * a + 1] += mj * wa * g[1];
+        ai[A_G + 3 * a + 2] += mj * wa * g[2];
+      }
+      ai[A_AVHEAT] += mj * avh;
+      double heat = 0.0;
+      if (heat_flag && !cross) {
+        // artificial heat transfer (eqs. 8-10), conservative pairwise form
+        const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
+        const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
+        heat = 2.0 * zbar / rbar * (qi[Q_E] - qj[Q_E]) * dw * rsq / (rsq + eps * hij * hij);
+        ai[A_HEAT] += mj * heat;
+      }
+
+      if (jown) {
+        double *aj = acc[j];
+        f[j][0] -= ff[0];
+        f[j][1] -= ff[1];
+        f[j][2] -= ff[2];
+        for (int a = 0; a < 3; a++) {
+          const double wa = -vij[a];
+          aj[A_G + 3 * a] += mi * wa * g[0];
+          aj[A_G + 3 * a + 1] += mi * wa * g[1];
+          aj[A_G + 3 * a + 2] += mi * wa * g[2];
+        }
+        aj[A_AVHEAT] += mi * avh;
+        if (heat_flag) aj[A_HEAT] -= mi * heat;
+      }
+    }
+    f[i][0] += fxi;
+    f[i][1] += fyi;
+    f[i][2] += fzi;
+  }
+}
+
+template void PairESPHSolid::pair_loop<0>();
+template void PairESPHSolid::pair_loop<1>();
+
+/* ----------------------------------------------------------------------
+   turn accumulated sums into rates (per particle, after reverse comm)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::finalize(int eflag)
+{
+  const int nlocal = atom->nlocal;
+  const int *type = atom->type;
+  const double *rmass = state->rmass;
+  double **v = atom->v;
+  const int bnd = (nboundary > 0);
+  double esum = 0.0;
+
+  for (int i = 0; i < nlocal; i++) {
+    const double *a = acc[i];
+    const double *q = hq[i];
+    if (rmass[i] > 0.0) {
+      const double rho = q[Q_RHO];
+      const double *sp = pred_valid ? fix_int->pred[i] + FixESPHIntegrate::P_S : state->s[i];
+      Eigen::Matrix3d L;
+      L << a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8];
+      // continuity (eq. 1): drho_i = sum_j m_j (v_i - v_j).grad_i W = -tr G
+      drho[i] = -(a[0] + a[4] + a[8]);
+      // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, plus viscous heating and heat transfer
+      const double *A = q + Q_A;
+      de[i] = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
+          A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]) + a[A_AVHEAT] + a[A_HEAT];
+      // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18)
+      L /= rho;
+      jaumann_rate(L, sp, shear[type[i]], ds[i]);
+      // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
+      dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
+      if (bnd) {
+        const double n2 = a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] +
+            a[A_NSUM + 2] * a[A_NSUM + 2];
+        if (n2 > 0.0 && a[A_WSUM] > 0.0) {
+          const double inv = 1.0 / sqrt(n2);
+          state->n[i][0] = a[A_NSUM] * inv;
+          state->n[i][1] = a[A_NSUM + 1] * inv;
+          state->n[i][2] = a[A_NSUM + 2] * inv;
+          state->depth[i] = a[A_DSUM] / a[A_WSUM];
+        } else {
+          state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
+          state->depth[i] = 0.0;
+        }
+      }
+      if (eflag) {
+        const double ei = rmass[i] * q[Q_E];
+        esum += ei;
+        if (eflag_atom) eatom[i] += ei;
+      }
+    } else {
+      // boundary particle: interpolated velocity and spin from the real particles (4.2)
+      drho[i] = de[i] = dh[i] = 0.0;
+      for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+      if (a[B_WSUM] > 0.0) {
+        const double inv = 1.0 / a[B_WSUM];
+        const double vk[3] = {a[B_VSUM] * inv, a[B_VSUM + 1] * inv, a[B_VSUM + 2] * inv};
+        // velocity gradient with the kernel-gradient correction (exact for linear
+        // fields): the kernel is one-sided at a surface, where the plain SPH
+        // gradient would rotate the normals too slowly
+        Eigen::Matrix3d Lk, M;
+        for (int r = 0; r < 3; r++)
+          for (int c = 0; c < 3; c++) {
+            Lk(r, c) = a[B_A + 3 * r + c] - vk[r] * a[B_B + c];
+            M(r, c) = a[B_M + 3 * r + c];
+          }
+        for (int d = dim; d < 3; d++) M(d, d) = 1.0;
+        if (fabs(M.determinant()) > 1.0e-6) Lk = Lk * M.inverse();
+        bvel[i][0] = vk[0];
+        bvel[i][1] = vk[1];
+        bvel[i][2] = vk[2];
+        bspin[i][0] = 0.5 * (Lk(0, 1) - Lk(1, 0));
+        bspin[i][1] = 0.5 * (Lk(0, 2) - Lk(2, 0));
+        bspin[i][2] = 0.5 * (Lk(1, 2) - Lk(2, 1));
+      } else {
+        bvel[i][0] = v[i][0];
+        bvel[i][1] = v[i][1];
+        bvel[i][2] = v[i][2];
+        bspin[i][0] = bspin[i][1] = bspin[i][2] = 0.0;
+      }
+    }
+  }
+  if (eflag_global) eng_vdwl += esum;
+  if (bnd) normals_valid = 1;
+}
+
+/* ----------------------------------------------------------------------
+   normals (eq. 30) and depths of real particles from the boundary particles
+   of their own body; used at the start of a run, later they come with the
+   regular pair loop
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::compute_normals()
+{
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+
+  // normals of the boundary particles must be known on ghosts
+  for (int i = 0; i < nlocal; i++) {
+    hq[i][Q_N] = state->n[i][0];
+    hq[i][Q_N + 1] = state->n[i][1];
+    hq[i][Q_N + 2] = state->n[i][2];
+    hq[i][Q_H] = state->h[i];
+  }
+  comm_stage = COMM_NORMALS;
+  comm->forward_comm(this, 4);
+  for (int i = 0; i < nall; i++)
+    for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if ((rmass[i] == 0.0) == (rmass[j] == 0.0)) continue;
+      if (body[i] != body[j]) continue;
+      const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
+      double w, dw;
+      if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w, dw))
+        continue;
+      const int p = (rmass[i] > 0.0) ? i : j;
+      const int k = (p == i) ? j : i;
+      if (p >= nlocal && !newton_pair && p != i) continue;
+      const double sgn = (k == i) ? 1.0 : -1.0;
+      const double *nk = hq[k] + Q_N;
+      double *ap = acc[p];
+      ap[A_NSUM] += w * nk[0];
+      ap[A_NSUM + 1] += w * nk[1];
+      ap[A_NSUM + 2] += w * nk[2];
+      ap[A_DSUM] += w * sgn * (dx[0] * nk[0] + dx[1] * nk[1] + dx[2] * nk[2]);
+      ap[A_WSUM] += w;
+    }
+  }
+  if (newton_pair) {
+    comm_stage = COMM_NORMALS;
+    comm->reverse_comm(this, 5);
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (rmass[i] == 0.0) continue;
+    const double *a = acc[i];
+    const double n2 =
+        a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
+    if (n2 > 0.0 && a[A_WSUM] > 0.0) {
+      const double inv = 1.0 / sqrt(n2);
+      for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
+      state->depth[i] = a[A_DSUM] / a[A_WSUM];
+    } else {
+      state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
+      state->depth[i] = 0.0;
+    }
+  }
+  normals_valid = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                     int * /*pbc*/)
+{
+  int m = 0;
+  if (comm_stage == COMM_NORMALS) {
+    for (int i = 0; i < n; i++) {
+      const double *q = hq[list[i]];
+      buf[m++] = q[Q_N];
+      buf[m++] = q[Q_N + 1];
+      buf[m++] = q[Q_N + 2];
+      buf[m++] = q[Q_H];
+    }
+    return m;
+  }
+  const int bnd = (nforward >= 16);
+  for (int i = 0; i < n; i++) {
+    const double *q = hq[list[i]];
+    for (int k = 0; k < 12; k++) buf[m++] = q[k];
+    if (bnd)
+      for (int k = Q_N; k <= Q_DEPTH; k++) buf[m++] = q[k];
+    if (heat_flag) {
+      buf[m++] = q[Q_E];
+      buf[m++] = q[Q_ZETA];
+    }
+  }
+  return m;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  const int last = first + n;
+  if (comm_stage == COMM_NORMALS) {
+    for (int i = first; i < last; i++) {
+      double *q = hq[i];
+      q[Q_N] = buf[m++];
+      q[Q_N + 1] = buf[m++];
+      q[Q_N + 2] = buf[m++];
+      q[Q_H] = buf[m++];
+    }
+    return;
+  }
+  const int bnd = (nforward >= 16);
+  for (int i = first; i < last; i++) {
+    double *q = hq[i];
+    for (int k = 0; k < 12; k++) q[k] = buf[m++];
+    if (bnd)
+      for (int k = Q_N; k <= Q_DEPTH; k++) q[k] = buf[m++];
+    if (heat_flag) {
+      q[Q_E] = buf[m++];
+      q[Q_ZETA] = buf[m++];
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  const int last = first + n;
+  const int k0 = (comm_stage == COMM_NORMALS) ? A_NSUM : 0;
+  const int k1 = (comm_stage == COMM_NORMALS) ? A_WSUM + 1 : nreverse;
+  for (int i = first; i < last; i++)
+    for (int k = k0; k < k1; k++) buf[m++] = acc[i][k];
+  return m;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  const int k0 = (comm_stage == COMM_NORMALS) ? A_NSUM : 0;
+  const int k1 = (comm_stage == COMM_NORMALS) ? A_WSUM + 1 : nreverse;
+  for (int i = 0; i < n; i++) {
+    double *a = acc[list[i]];
+    for (int k = k0; k < k1; k++) a[k] += buf[m++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairESPHSolid::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += (double) nmax * (NACC + NHQ + 3 + 6 + 3 + 3) * sizeof(double);
+  return bytes;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *PairESPHSolid::extract(const char *str, int &dim_out)
+{
+  dim_out = 0;
+  if (strcmp(str, "h") == 0) return (void *) &h0;
+  if (strcmp(str, "cut") == 0) return (void *) &cut_global;
+  return nullptr;
+}

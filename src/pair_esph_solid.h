@@ -1,0 +1,101 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(esph/solid,PairESPHSolid);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_ESPH_SOLID_H
+#define LMP_PAIR_ESPH_SOLID_H
+
+#include "pair.h"
+
+#include "esph_eos.h"
+
+namespace LAMMPS_NS {
+
+class PairESPHSolid : public Pair {
+  friend class FixESPHIntegrate;
+
+ public:
+  PairESPHSolid(class LAMMPS *);
+  ~PairESPHSolid() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void setup() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+  void *extract(const char *, int &) override;
+
+  // accumulator slots (real particles | boundary particles), see compute()
+  static constexpr int NACC = 25;
+  // hoisted per-particle quantities sent to ghosts every step
+  static constexpr int NHQ = 18;
+
+ protected:
+  // global settings
+  double h0;                        // initial smoothing length
+  double cut_global;                // neighbour cutoff = support * h0 * hmax
+  int kernel;                       // ESPH::KernelType
+  int dim;                          // kernel dimension (1, 2, 3)
+  double alpha, beta, eps;          // Monaghan-Gingold viscosity
+  int heat_flag;                    // artificial heat transfer (eqs. 8-10)
+  double g1, g2;
+  int hvar_flag;                    // variable smoothing length (eq. 24)
+  double hmax;                      // allowed growth of h (cutoff factor)
+  int contact;                      // ESPH::ContactRule
+  double gaptol;                    // contact gap tolerance (fraction of h0)
+
+  // per-type material
+  ESPH::EOS *eos;
+  double *shear;
+  int *matset;
+
+  // per-atom work arrays
+  int nmax;
+  double **acc;       // accumulated sums, NACC per atom (reverse communicated)
+  double **hq;        // hoisted quantities, NHQ per atom (forward communicated)
+  double *drho, *de, *dh, **ds;    // rates for the integrator
+  double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
+  int comm_stage;
+  int nforward, nreverse;
+
+  int pred_valid;         // inside a step: the integrator's predicted end-of-step state is valid
+  int normals_valid;      // stored real-particle normals are current
+  double dt_cfl;          // local CFL time step estimate (min h / (c_L + |v|))
+  int ncontact_pairs;     // cross-body pairs interacting in the last compute (local)
+  bigint nboundary;       // number of boundary (zero-mass) particles, counted at setup
+
+  class ESPHState *state;
+  class FixESPHIntegrate *fix_int;
+
+  virtual void allocate();
+  void grow_work();
+  void hoist();
+  void finalize(int eflag);
+  void compute_normals();
+  template <int CONTACT> void pair_loop();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
