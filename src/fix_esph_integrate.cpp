@@ -44,13 +44,14 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   vector_flag = 1;
-  size_vector = 5;
+  size_vector = 6;
   global_freq = 1;
   extvector = 0;
 
   cfl = 0.0;
   move = 1;
   ncontact = 0;
+  nepisodes = 0;
   tfirst = tlast = -1.0;
   dtmin = 0.0;
   dtmax = 0.0;
@@ -274,12 +275,14 @@ void FixESPHIntegrate::final_integrate()
   if (pair->nboundary > 0) {
     int local = pair->ncontact_pairs, total;
     MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
-    ncontact = total;
     if (total > 0) {
+      // a contact episode begins; the first one defines the contact time
       const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+      if (ncontact == 0) nepisodes++;
       if (tfirst < 0.0) tfirst = t - update->dt;
-      tlast = t;
+      if (nepisodes == 1) tlast = t;
     }
+    ncontact = total;
   }
 }
 
@@ -316,8 +319,9 @@ void FixESPHIntegrate::adapt_dt()
 /* ----------------------------------------------------------------------
    1 = internal energy sum m e of the group, 2 = number of interacting
    cross-body (contact) pairs, 3 = CFL time step estimate (without factor),
-   4 = time when contact began, 5 = time of the last step in contact
-   (4 and 5 are -1 before any contact)
+   4 = time when the first contact began, 5 = time of the last step of the
+   first contact episode (4 and 5 are -1 before any contact), 6 = number of
+   contact episodes (separate periods with interacting cross-body pairs)
 ------------------------------------------------------------------------- */
 
 double FixESPHIntegrate::compute_vector(int n)
@@ -342,7 +346,8 @@ double FixESPHIntegrate::compute_vector(int n)
     return dt;
   }
   if (n == 3) return tfirst;
-  return tlast;
+  if (n == 4) return tlast;
+  return (double) nepisodes;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -53,7 +53,8 @@ class FixESPHIntegrate : public Fix {
   double cfl;             // CFL safety factor, 0 = fixed time step
   double dtmin, dtmax;    // bounds of the adaptive step
   int ncontact;               // interacting cross-body pairs at the last step
-  double tfirst, tlast;       // first and last time with contact
+  int nepisodes;              // number of contact episodes so far
+  double tfirst, tlast;       // start and end of the first contact episode
   class PairESPHSolid *pair;
   class ESPHState *state;
 

@@ -99,7 +99,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   hvar_flag = 0;
   hmax = 1.0;
   contact = CONTACT_SOLID;
-  gaptol = 0.01;
+  gaptol = 1.0e-3;
 
   pred_valid = 0;
   normals_valid = 0;

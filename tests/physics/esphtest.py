@@ -1,0 +1,112 @@
+"""Helpers for the ESPH physics tests: run LAMMPS, read thermo output and the
+ROD_IMPACT summary line, check values against references with stated tolerances,
+and close with the plain 'N passed, N failed' line that CTest output readers know."""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+EXAMPLES = os.path.join(ROOT, "examples")
+
+
+def parse_args():
+    p = argparse.ArgumentParser()
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--workdir", required=True)
+    a = p.parse_args()
+    os.makedirs(a.workdir, exist_ok=True)
+    return a
+
+
+def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900):
+    """run lmp -in infile (copied into the work dir) with -var overrides; return the log text"""
+    src = infile if os.path.isabs(infile) else os.path.join(EXAMPLES, infile)
+    dst = os.path.join(args.workdir, os.path.basename(src))
+    if os.path.abspath(src) != os.path.abspath(dst):
+        shutil.copy(src, dst)
+    cmd = [args.lmp, "-in", os.path.basename(dst), "-log", log, "-nocite", "-screen", "none"]
+    for k, v in (variables or {}).items():
+        cmd += ["-var", k, str(v)]
+    if np > 1:
+        cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np)] + cmd
+    r = subprocess.run(cmd, cwd=args.workdir, capture_output=True, text=True, timeout=timeout)
+    logpath = os.path.join(args.workdir, log)
+    text = open(logpath).read() if os.path.exists(logpath) else ""
+    if r.returncode != 0:
+        sys.stdout.write(r.stdout[-3000:] + r.stderr[-3000:] + text[-3000:])
+        raise RuntimeError("lmp failed: " + " ".join(cmd))
+    return text
+
+
+def write_input(args, name, text):
+    path = os.path.join(args.workdir, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def thermo(text):
+    """list of runs, each a dict column -> list of floats"""
+    runs = []
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].split()[:1] == ["Step"]:
+            cols = lines[i].split()
+            data = {c: [] for c in cols}
+            i += 1
+            while i < len(lines) and not lines[i].startswith("Loop time"):
+                parts = lines[i].split()
+                if len(parts) == len(cols):
+                    try:
+                        vals = [float(x) for x in parts]
+                    except ValueError:
+                        i += 1
+                        continue
+                    for c, v in zip(cols, vals):
+                        data[c].append(v)
+                i += 1
+            runs.append(data)
+        i += 1
+    return runs
+
+
+def summary(text, key="ROD_IMPACT"):
+    for line in text.splitlines():
+        if line.startswith(key + " "):
+            return {k: float(v) for k, v in re.findall(r"(\w+)=([-+0-9.eE]+)", line)}
+    raise RuntimeError(key + " line not found")
+
+
+class Checks:
+    def __init__(self, title):
+        self.title = title
+        self.npass = self.nfail = 0
+        print("==", title)
+
+    def near(self, name, value, ref, tol, why):
+        ok = abs(value - ref) <= tol
+        self._report(ok, f"{name}: {value:.6g} vs {ref:.6g} (tol {tol:.3g}; {why})")
+
+    def less(self, name, value, limit, why):
+        ok = value < limit
+        self._report(ok, f"{name}: {value:.6g} < {limit:.6g} ({why})")
+
+    def true(self, name, cond, why):
+        self._report(bool(cond), f"{name} ({why})")
+
+    def _report(self, ok, msg):
+        if ok:
+            self.npass += 1
+        else:
+            self.nfail += 1
+        print(("PASS " if ok else "FAIL ") + msg, flush=True)
+
+    def done(self):
+        print(f"{self.npass} passed, {self.nfail} failed")
+        sys.exit(0 if self.nfail == 0 else 1)
