@@ -58,6 +58,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
 
   spacing = 0.0;
+  smooth = 1.0;
   btype = 0;
   mode = GENERATE;
   ncreated = 0;
@@ -77,6 +78,13 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
       if (btype < 1 || btype > atom->ntypes)
         error->all(FLERR, iarg + 1, "Fix esph/boundary type {} is not a valid atom type (1-{})",
                    arg[iarg + 1], atom->ntypes);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "smooth") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary smooth", error);
+      smooth = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (smooth < 1.0 || smooth > 3.0)
+        error->all(FLERR, iarg + 1, "Fix esph/boundary smooth must be in [1,3] spacings, got {}",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "given") == 0) {
       mode = GIVEN;
@@ -229,6 +237,7 @@ void FixESPHBoundary::generate()
 
   // periodic images near the box faces
   const double cut = ESPH::KERNEL_SUPPORT * spacing;
+  const double cutimg = ESPH::KERNEL_SUPPORT * smooth * spacing;
   std::vector<double> pts;
   pts.reserve(all.size());
   const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
@@ -239,8 +248,8 @@ void FixESPHBoundary::generate()
     for (int d = 0; d < 3; d++) {
       ns[d] = 0;
       sh[d][ns[d]++] = 0;
-      if (per[d] && p[d] < lo[d] + cut) sh[d][ns[d]++] = 1;
-      if (per[d] && p[d] > hi[d] - cut) sh[d][ns[d]++] = -1;
+      if (per[d] && p[d] < lo[d] + cutimg) sh[d][ns[d]++] = 1;
+      if (per[d] && p[d] > hi[d] - cutimg) sh[d][ns[d]++] = -1;
     }
     for (int a = 0; a < ns[0]; a++)
       for (int b = 0; b < ns[1]; b++)
@@ -265,8 +274,15 @@ void FixESPHBoundary::generate()
     grid[cellkey(pts[4 * k], pts[4 * k + 1], pts[4 * k + 2])].push_back(k);
 
   const int dim = domain->dimension;
+  // detection with h = spacing (support 2 spacings: only the outer layer is off-centre);
+  // the normal direction from a kernel with h = smooth spacings: 1 (default) is exact on
+  // the faces, edges and corners of lattice blocks, a wider kernel averages the staircase
+  // of a lattice approximating a curved surface
+  const double hn = smooth * spacing;
   const double norm = ESPH::kernel_norm(ESPH::CUBIC, 3, spacing);
+  const double normn = ESPH::kernel_norm(ESPH::CUBIC, 3, hn);
   const double hinv = 1.0 / spacing;
+  const int reach = (int) ceil(ESPH::KERNEL_SUPPORT * hn / cut);
 
   std::vector<double> newx, newn;
   std::vector<int> src;
@@ -274,20 +290,24 @@ void FixESPHBoundary::generate()
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     const double *xi = atom->x[i];
     const double bi = (double) state->body[i];
-    double c[3] = {0.0, 0.0, 0.0}, wsum = 0.0;
-    for (int a = -1; a <= 1; a++)
-      for (int b = -1; b <= 1; b++)
-        for (int cc = -1; cc <= 1; cc++) {
+    double c[3] = {0.0, 0.0, 0.0}, wsum = 0.0, cn[3] = {0.0, 0.0, 0.0};
+    for (int a = -reach; a <= reach; a++)
+      for (int b = -reach; b <= reach; b++)
+        for (int cc = -reach; cc <= reach; cc++) {
           auto it = grid.find(cellkey(xi[0] + a * cut, xi[1] + b * cut, xi[2] + cc * cut));
           if (it == grid.end()) continue;
           for (int k : it->second) {
             const double *p = &pts[4 * k];
             if (p[3] != bi) continue;
             const double d[3] = {p[0] - xi[0], p[1] - xi[1], p[2] - xi[2]};
+            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             double w, dw;
-            if (!ESPH::kernel_eval(ESPH::CUBIC, 3, norm, hinv,
-                                   sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), w, dw))
-              continue;
+            if (ESPH::kernel_eval(ESPH::CUBIC, 3, normn, 1.0 / hn, r, w, dw)) {
+              cn[0] += w * d[0];
+              cn[1] += w * d[1];
+              cn[2] += w * d[2];
+            }
+            if (!ESPH::kernel_eval(ESPH::CUBIC, 3, norm, hinv, r, w, dw)) continue;
             c[0] += w * d[0];
             c[1] += w * d[1];
             c[2] += w * d[2];
@@ -297,8 +317,10 @@ void FixESPHBoundary::generate()
     if (dim == 2) c[2] = 0.0;
     const double off = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / wsum;
     if (off < SURFACE_OFFSET * spacing) continue;
-    const double len = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    const double n[3] = {-c[0] / len, -c[1] / len, -c[2] / len};
+    if (dim == 2) cn[2] = 0.0;
+    const double len = sqrt(cn[0] * cn[0] + cn[1] * cn[1] + cn[2] * cn[2]);
+    if (len == 0.0) continue;
+    const double n[3] = {-cn[0] / len, -cn[1] / len, -cn[2] / len};
     // half a spacing outside along each lattice direction the normal points to
     const double nmax = MAX(fabs(n[0]), MAX(fabs(n[1]), fabs(n[2])));
     for (int d = 0; d < 3; d++) {

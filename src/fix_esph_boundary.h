@@ -34,6 +34,7 @@ class FixESPHBoundary : public Fix {
 
  protected:
   double spacing;    // particle spacing of the bodies
+  double smooth;     // smoothing length of the normal kernel, in spacings
   int btype;         // type of generated boundary particles (0: type of the source particle)
   int mode;          // GENERATE or GIVEN
   bigint ncreated;

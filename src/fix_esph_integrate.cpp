@@ -37,6 +37,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// contact interruptions up to this many steps belong to the same contact episode
+static constexpr int HOLD_STEPS = 10;
+
 /* ---------------------------------------------------------------------- */
 
 FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
@@ -44,13 +47,13 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 7;
   global_freq = 1;
   extvector = 0;
 
   cfl = 0.0;
   move = 1;
-  ncontact = 0;
+  quiet = 0;
   nepisodes = 0;
   tfirst = tlast = -1.0;
   dtmin = 0.0;
@@ -271,18 +274,22 @@ void FixESPHIntegrate::final_integrate()
   // force computations outside a step (run setup, run pre no) see the state as is
   pair->pred_valid = 0;
 
-  // contact bookkeeping: first and last time with interacting cross-body pairs
+  // contact bookkeeping: an episode is a period with interacting cross-body pairs;
+  // interruptions shorter than HOLD_STEPS steps (a surface particle bouncing once at
+  // the first touch) do not end it. The contact time runs from the first step with
+  // touching surfaces or interacting pairs to the last interaction of the first episode.
   if (pair->nboundary > 0) {
-    int local = pair->ncontact_pairs, total;
-    MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
-    if (total > 0) {
-      // a contact episode begins; the first one defines the contact time
-      const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-      if (ncontact == 0) nepisodes++;
-      if (tfirst < 0.0) tfirst = t - update->dt;
+    int local[2] = {pair->ntouch_pairs, pair->ncontact_pairs}, total[2];
+    MPI_Allreduce(local, total, 2, MPI_INT, MPI_SUM, world);
+    const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+    if (tfirst < 0.0 && (total[0] > 0 || total[1] > 0)) tfirst = t - update->dt;
+    if (total[1] > 0) {
+      if (nepisodes == 0 || quiet > HOLD_STEPS) nepisodes++;
       if (nepisodes == 1) tlast = t;
+      quiet = 0;
+    } else {
+      quiet++;
     }
-    ncontact = total;
   }
 }
 
@@ -319,9 +326,10 @@ void FixESPHIntegrate::adapt_dt()
 /* ----------------------------------------------------------------------
    1 = internal energy sum m e of the group, 2 = number of interacting
    cross-body (contact) pairs, 3 = CFL time step estimate (without factor),
-   4 = time when the first contact began, 5 = time of the last step of the
-   first contact episode (4 and 5 are -1 before any contact), 6 = number of
-   contact episodes (separate periods with interacting cross-body pairs)
+   4 = time when the first contact began, 5 = time of the last interaction of
+   the first contact episode (4 and 5 are -1 before any contact), 6 = number of
+   contact episodes (separate periods with touching surfaces or interacting
+   pairs), 7 = number of cross-body pairs whose surfaces touch
 ------------------------------------------------------------------------- */
 
 double FixESPHIntegrate::compute_vector(int n)
@@ -347,7 +355,10 @@ double FixESPHIntegrate::compute_vector(int n)
   }
   if (n == 3) return tfirst;
   if (n == 4) return tlast;
-  return (double) nepisodes;
+  if (n == 5) return (double) nepisodes;
+  int local = pair->ntouch_pairs, total;
+  MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
+  return (double) total;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -52,7 +52,7 @@ class FixESPHIntegrate : public Fix {
   double dtv, dtf, dth;
   double cfl;             // CFL safety factor, 0 = fixed time step
   double dtmin, dtmax;    // bounds of the adaptive step
-  int ncontact;               // interacting cross-body pairs at the last step
+  int quiet;                  // steps since the last interaction across bodies
   int nepisodes;              // number of contact episodes so far
   double tfirst, tlast;       // start and end of the first contact episode
   class PairESPHSolid *pair;

@@ -52,12 +52,14 @@ static constexpr int A_HEAT = 10;     // artificial heat transfer
 static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
 static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
 static constexpr int A_WSUM = 15;     // sum_k W_ik
+static constexpr int A_M = 16;        // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
 // boundary particles
 static constexpr int B_A = 0;         // 0..8: sum_p V_p v_p (x) grad_k W_kp
 static constexpr int B_B = 9;         // 9..11: sum_p V_p grad_k W_kp
 static constexpr int B_VSUM = 12;     // 12..14: sum_p V_p W_kp v_p
 static constexpr int B_WSUM = 15;     // sum_p V_p W_kp
 static constexpr int B_M = 16;        // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
+static constexpr int B_XSUM = 25;     // 25..27: sum_p V_p W_kp (x_p - x_k)
 
 // slots of the hoisted array hq[i][*]
 static constexpr int Q_V = 0;         // 0..2 predicted velocity
@@ -100,11 +102,12 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   hmax = 1.0;
   contact = CONTACT_SOLID;
   gaptol = 1.0e-3;
+  correct_flag = 0;
 
   pred_valid = 0;
   normals_valid = 0;
   dt_cfl = 0.0;
-  ncontact_pairs = 0;
+  ncontact_pairs = ntouch_pairs = 0;
   comm_stage = COMM_HOIST;
   nforward = nreverse = 0;
 
@@ -224,6 +227,16 @@ void PairESPHSolid::settings(int narg, char **arg)
         error->all(FLERR, iarg + 2,
                    "Unknown pair esph/solid contact rule {}: expected off, solid or paper",
                    arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "gradient") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gradient", error);
+      if (strcmp(arg[iarg + 1], "plain") == 0)
+        correct_flag = 0;
+      else if (strcmp(arg[iarg + 1], "corrected") == 0)
+        correct_flag = 1;
+      else
+        error->all(FLERR, iarg + 2,
+                   "Unknown pair esph/solid gradient {}: expected plain or corrected", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
@@ -535,10 +548,11 @@ void PairESPHSolid::compute(int eflag, int vflag)
   comm_stage = COMM_HOIST;
   comm->forward_comm(this, nforward);
 
-  nreverse = bnd ? NACC : 11;    // without boundary particles only G, heating
+  // without boundary particles or gradient correction only G and the heating terms
+  nreverse = (bnd || correct_flag) ? NACC : 11;
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
-  ncontact_pairs = 0;
+  ncontact_pairs = ntouch_pairs = 0;
   if (bnd)
     pair_loop<1>();
   else
@@ -648,6 +662,7 @@ template <int BND> void PairESPHSolid::pair_loop()
             ak[B_M + 3 * a] += xa * gk[0];
             ak[B_M + 3 * a + 1] += xa * gk[1];
             ak[B_M + 3 * a + 2] += xa * gk[2];
+            ak[B_XSUM + a] += xa * w;
           }
           ak[B_WSUM] += Vp * w;
         }
@@ -702,6 +717,7 @@ template <int BND> void PairESPHSolid::pair_loop()
       if (cross) {
         double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
         const double gap = contact_gap(dx, nc, qi[Q_DEPTH], qj[Q_DEPTH]);
+        if (gap <= gap_tol) ntouch_pairs++;
         if (!contact_gate(contact, gap, gap_tol, vn, xn, fn)) continue;
         if (contact == CONTACT_SOLID && fn > 0.0) fn = 0.0;    // no tension across contact
         ff[0] = fn * nc[0];
@@ -724,6 +740,15 @@ template <int BND> void PairESPHSolid::pair_loop()
         ai[A_G + 3 * a + 2] += mj * wa * g[2];
       }
       ai[A_AVHEAT] += mj * avh;
+      if (correct_flag) {
+        // x_j - x_i = -dx
+        for (int a = 0; a < 3; a++) {
+          const double xa = -dx[a];
+          ai[A_M + 3 * a] += mj * xa * g[0];
+          ai[A_M + 3 * a + 1] += mj * xa * g[1];
+          ai[A_M + 3 * a + 2] += mj * xa * g[2];
+        }
+      }
       double heat = 0.0;
       if (heat_flag && !cross) {
         // artificial heat transfer (eqs. 8-10), conservative pairwise form
@@ -746,6 +771,13 @@ template <int BND> void PairESPHSolid::pair_loop()
         }
         aj[A_AVHEAT] += mi * avh;
         if (heat_flag) aj[A_HEAT] -= mi * heat;
+        if (correct_flag)
+          for (int a = 0; a < 3; a++) {
+            const double xa = -dx[a];
+            aj[A_M + 3 * a] += mi * xa * g[0];
+            aj[A_M + 3 * a + 1] += mi * xa * g[1];
+            aj[A_M + 3 * a + 2] += mi * xa * g[2];
+          }
       }
     }
     f[i][0] += fxi;
@@ -784,8 +816,21 @@ void PairESPHSolid::finalize(int eflag)
       const double *A = q + Q_A;
       de[i] = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
           A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]) + a[A_AVHEAT] + a[A_HEAT];
-      // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18)
-      L /= rho;
+      // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
+      // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
+      bool corrected = false;
+      if (correct_flag) {
+        Eigen::Matrix3d M;
+        M << a[A_M], a[A_M + 1], a[A_M + 2], a[A_M + 3], a[A_M + 4], a[A_M + 5], a[A_M + 6],
+            a[A_M + 7], a[A_M + 8];
+        for (int d = dim; d < 3; d++) M(d, d) = rho;
+        const double det = M.determinant();
+        if (fabs(det) > 1.0e-6 * rho * rho * rho) {
+          L = L * M.inverse();
+          corrected = true;
+        }
+      }
+      if (!corrected) L /= rho;
       jaumann_rate(L, sp, shear[type[i]], ds[i]);
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
@@ -813,19 +858,30 @@ void PairESPHSolid::finalize(int eflag)
       drho[i] = de[i] = dh[i] = 0.0;
       for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
       if (a[B_WSUM] > 0.0) {
+        // interpolation from the real particles p of the body: with the Shepard means
+        // vbar, xi = xbar - x_k, and the corrected velocity gradient
+        //   L = (A - vbar (x) b) (M - xi (x) b)^-1,
+        // exact for a linear velocity field where the kernel is one-sided (surface)
         const double inv = 1.0 / a[B_WSUM];
-        const double vk[3] = {a[B_VSUM] * inv, a[B_VSUM + 1] * inv, a[B_VSUM + 2] * inv};
-        // velocity gradient with the kernel-gradient correction (exact for linear
-        // fields): the kernel is one-sided at a surface, where the plain SPH
-        // gradient would rotate the normals too slowly
+        const double vbar[3] = {a[B_VSUM] * inv, a[B_VSUM + 1] * inv, a[B_VSUM + 2] * inv};
+        const double xi[3] = {a[B_XSUM] * inv, a[B_XSUM + 1] * inv, a[B_XSUM + 2] * inv};
         Eigen::Matrix3d Lk, M;
         for (int r = 0; r < 3; r++)
           for (int c = 0; c < 3; c++) {
-            Lk(r, c) = a[B_A + 3 * r + c] - vk[r] * a[B_B + c];
-            M(r, c) = a[B_M + 3 * r + c];
+            Lk(r, c) = a[B_A + 3 * r + c] - vbar[r] * a[B_B + c];
+            M(r, c) = a[B_M + 3 * r + c] - xi[r] * a[B_B + c];
           }
         for (int d = dim; d < 3; d++) M(d, d) = 1.0;
-        if (fabs(M.determinant()) > 1.0e-6) Lk = Lk * M.inverse();
+        if (fabs(M.determinant()) > 1.0e-6)
+          Lk = Lk * M.inverse();
+        else
+          Lk.setZero();
+        // the boundary particle moves with the Shepard mean corrected by the rotation
+        // only: extrapolating the strain part would overshoot at impact fronts
+        const Eigen::Matrix3d Wk = 0.5 * (Lk - Lk.transpose());
+        double vk[3];
+        for (int r = 0; r < 3; r++)
+          vk[r] = vbar[r] - (Wk(r, 0) * xi[0] + Wk(r, 1) * xi[1] + Wk(r, 2) * xi[2]);
         bvel[i][0] = vk[0];
         bvel[i][1] = vk[1];
         bvel[i][2] = vk[2];

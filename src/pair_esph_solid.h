@@ -46,7 +46,7 @@ class PairESPHSolid : public Pair {
   void *extract(const char *, int &) override;
 
   // accumulator slots (real particles | boundary particles), see compute()
-  static constexpr int NACC = 25;
+  static constexpr int NACC = 28;
   // hoisted per-particle quantities sent to ghosts every step
   static constexpr int NHQ = 18;
 
@@ -63,6 +63,7 @@ class PairESPHSolid : public Pair {
   double hmax;                      // allowed growth of h (cutoff factor)
   int contact;                      // ESPH::ContactRule
   double gaptol;                    // contact gap tolerance (fraction of h0)
+  int correct_flag;                 // kernel-gradient corrected velocity gradient
 
   // per-type material
   ESPH::EOS *eos;
@@ -82,6 +83,7 @@ class PairESPHSolid : public Pair {
   int normals_valid;      // stored real-particle normals are current
   double dt_cfl;          // local CFL time step estimate (min h / (c_L + |v|))
   int ncontact_pairs;     // cross-body pairs interacting in the last compute (local)
+  int ntouch_pairs;       // cross-body pairs whose surfaces touch (gap <= tolerance)
   bigint nboundary;       // number of boundary (zero-mass) particles, counted at setup
 
   class ESPHState *state;

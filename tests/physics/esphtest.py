@@ -19,6 +19,8 @@ def parse_args():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--workdir", required=True)
     a = p.parse_args()
+    a.lmp = os.path.abspath(a.lmp)
+    a.workdir = os.path.abspath(a.workdir)
     os.makedirs(a.workdir, exist_ok=True)
     return a
 
