@@ -206,6 +206,15 @@ void FixESPHBoundary::generate()
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && state->rmass[i] == 0.0) nexist++;
   MPI_Allreduce(&nexist, &nexist_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  bigint ngroup = 0, ngroup_all;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) ngroup++;
+  MPI_Allreduce(&ngroup, &ngroup_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nexist_all > 0 && nexist_all == ngroup_all)
+    error->all(FLERR,
+               "Fix esph/boundary: all {} particles of group {} have zero mass; set the masses "
+               "(and body IDs) of the real particles before defining this fix",
+               ngroup_all, group->names[igroup]);
   if (nexist_all > 0) {
     if (comm->me == 0)
       utils::logmesg(lmp, "Fix esph/boundary: using {} existing boundary particles\n", nexist_all);

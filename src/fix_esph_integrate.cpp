@@ -39,6 +39,8 @@ using namespace FixConst;
 
 // contact interruptions up to this many steps belong to the same contact episode
 static constexpr int HOLD_STEPS = 10;
+// contact is on while the contact force exceeds this fraction of its peak
+static constexpr double FORCE_FRACTION = 0.01;
 
 /* ---------------------------------------------------------------------- */
 
@@ -47,14 +49,16 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   vector_flag = 1;
-  size_vector = 7;
+  size_vector = 8;
   global_freq = 1;
-  extvector = 0;
+  extvector = -1;
+  extlist = new int[size_vector]{1, 0, 0, 0, 0, 0, 0, 0};    // internal energy is extensive
 
   cfl = 0.0;
   move = 1;
   quiet = 0;
   nepisodes = 0;
+  fcontact = fpeak = 0.0;
   tfirst = tlast = -1.0;
   dtmin = 0.0;
   dtmax = 0.0;
@@ -274,16 +278,23 @@ void FixESPHIntegrate::final_integrate()
   // force computations outside a step (run setup, run pre no) see the state as is
   pair->pred_valid = 0;
 
-  // contact bookkeeping: an episode is a period with interacting cross-body pairs;
-  // interruptions shorter than HOLD_STEPS steps (a surface particle bouncing once at
-  // the first touch) do not end it. The contact time runs from the first step with
-  // touching surfaces or interacting pairs to the last interaction of the first episode.
+  // contact bookkeeping. The contact force F is the sum of the compressive normal forces
+  // transmitted between bodies. Contact begins with the first touching or interacting
+  // pair; it lasts while F exceeds FORCE_FRACTION of its peak so far, so that bodies left
+  // resting against each other without load (a short striker that has stopped) or a
+  // surface particle bouncing once at first touch do not change the contact time.
+  // An episode is a period with F above that level; interruptions of up to HOLD_STEPS
+  // steps belong to the same episode.
   if (pair->nboundary > 0) {
-    int local[2] = {pair->ntouch_pairs, pair->ncontact_pairs}, total[2];
-    MPI_Allreduce(local, total, 2, MPI_INT, MPI_SUM, world);
+    double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs,
+                       pair->fcontact};
+    double total[3];
+    MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
     const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-    if (tfirst < 0.0 && (total[0] > 0 || total[1] > 0)) tfirst = t - update->dt;
-    if (total[1] > 0) {
+    if (tfirst < 0.0 && (total[0] > 0.0 || total[1] > 0.0)) tfirst = t - update->dt;
+    fcontact = total[2];
+    if (fcontact > fpeak) fpeak = fcontact;
+    if (fcontact > 0.0 && fcontact >= FORCE_FRACTION * fpeak) {
       if (nepisodes == 0 || quiet > HOLD_STEPS) nepisodes++;
       if (nepisodes == 1) tlast = t;
       quiet = 0;
@@ -356,6 +367,7 @@ double FixESPHIntegrate::compute_vector(int n)
   if (n == 3) return tfirst;
   if (n == 4) return tlast;
   if (n == 5) return (double) nepisodes;
+  if (n == 7) return fcontact;
   int local = pair->ntouch_pairs, total;
   MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
   return (double) total;

@@ -52,7 +52,8 @@ class FixESPHIntegrate : public Fix {
   double dtv, dtf, dth;
   double cfl;             // CFL safety factor, 0 = fixed time step
   double dtmin, dtmax;    // bounds of the adaptive step
-  int quiet;                  // steps since the last interaction across bodies
+  int quiet;                  // steps since the contact force was last on
+  double fcontact, fpeak;     // contact force now and its peak
   int nepisodes;              // number of contact episodes so far
   double tfirst, tlast;       // start and end of the first contact episode
   class PairESPHSolid *pair;

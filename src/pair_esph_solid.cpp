@@ -108,6 +108,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   normals_valid = 0;
   dt_cfl = 0.0;
   ncontact_pairs = ntouch_pairs = 0;
+  fcontact = 0.0;
   comm_stage = COMM_HOIST;
   nforward = nreverse = 0;
 
@@ -164,6 +165,18 @@ void PairESPHSolid::allocate()
 void PairESPHSolid::settings(int narg, char **arg)
 {
   if (narg < 1) utils::missing_cmd_args(FLERR, "pair_style esph/solid", error);
+  // a new pair_style command starts from the defaults
+  kernel = CUBIC;
+  dim = domain->dimension;
+  alpha = beta = 1.0;
+  eps = 0.1;
+  heat_flag = 0;
+  g1 = g2 = 0.0;
+  hvar_flag = 0;
+  hmax = 1.0;
+  contact = CONTACT_SOLID;
+  gaptol = 1.0e-3;
+  correct_flag = 0;
   h0 = utils::numeric(FLERR, arg[0], false, lmp);
   if (h0 <= 0.0)
     error->all(FLERR, 1, "Pair esph/solid smoothing length h must be > 0, got {}", arg[0]);
@@ -475,6 +488,7 @@ void PairESPHSolid::hoist()
   const double *rmass = state->rmass;
   // inside a step the integrator has predicted the state at its end
   double **pred = pred_valid ? fix_int->pred : nullptr;
+  const double hlimit = cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12);
 
   double dtmin = BIG_DT;
   for (int i = 0; i < nlocal; i++) {
@@ -521,6 +535,10 @@ void PairESPHSolid::hoist()
       const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
       const double dti = h / (cl + vmag);
       if (dti < dtmin) dtmin = dti;
+      if (hvar_flag && h > hlimit)
+        error->one(FLERR, Error::NOLASTLINE,
+                   "Smoothing length {} of atom {} exceeds the pair esph/solid limit hvar x h = {}",
+                   h, atom->tag[i], hlimit);
     } else {
       q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
       q[Q_H] = state->h[i];
@@ -553,6 +571,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
   ncontact_pairs = ntouch_pairs = 0;
+  fcontact = 0.0;
   if (bnd)
     pair_loop<1>();
   else
@@ -724,6 +743,9 @@ template <int BND> void PairESPHSolid::pair_loop()
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];
         ncontact_pairs++;
+        // transmitted compressive normal force; with newton off a pair with a ghost
+        // partner is seen by two ranks
+        fcontact -= (newton_pair || j < nlocal) ? fn : 0.5 * fn;
       }
 
       fxi += ff[0];

@@ -84,6 +84,7 @@ class PairESPHSolid : public Pair {
   double dt_cfl;          // local CFL time step estimate (min h / (c_L + |v|))
   int ncontact_pairs;     // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;       // cross-body pairs whose surfaces touch (gap <= tolerance)
+  double fcontact;        // sum of transmitted compressive normal pair forces (local)
   bigint nboundary;       // number of boundary (zero-mass) particles, counted at setup
 
   class ESPHState *state;

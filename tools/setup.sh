@@ -62,4 +62,4 @@ cmake -S "$here" -B "$here/build" -G Ninja -D CMAKE_BUILD_TYPE=Release \
   -D CMAKE_CXX_COMPILER_LAUNCHER=ccache > "$here/build.configure.log" 2>&1 \
   || { tail -n 30 "$here/build.configure.log" >&2; die "configuring the project failed (log: build.configure.log)"; }
 cmake --build "$here/build" -j "$jobs" || die "building the project failed"
-log "done: build/lmp (ESPH compiled in), build/esphplugin.so (plugin for $host/install/bin/lmp)"
+log "done: build/lmp (ESPH compiled in), build/plugin/esphplugin.so (plugin for $host/install/bin/lmp)"
