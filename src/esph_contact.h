@@ -19,7 +19,8 @@
 // surface, separation xij = x_i - x_j, relative velocity vij = v_i - v_j, and the pair
 // force on i, fij, that full SPH coupling would apply.
 //
-// Common normal: nc = (n_i - n_j)/|n_i - n_j|, pointing from i into the other body.
+// Common normal: nc ~ w_i n_i - w_j n_j (coherence-weighted, see contact_normal), pointing
+// from i into the other body.
 // Rules:
 //   PAPER : interact iff the particles approach along nc, (vij.nc)(xij.nc) < 0 (eq. 31).
 //   SOLID : (default) interact iff the surfaces touch, gap = -xij.nc - d_i - d_j <= tol,
@@ -37,19 +38,28 @@ namespace ESPH {
 
 enum ContactRule { CONTACT_OFF = 0, CONTACT_SOLID = 1, CONTACT_PAPER = 2 };
 
-/* common normal from i towards j; falls back on -xij/|xij| when the normals cancel */
+/* common normal from i towards j. The normals of real particles carry their coherence
+   as length: |n| = |sum_k n_k W_ik| / sum_k W_ik, 1 inside a flat face, less near edges
+   and corners where the boundary normals disagree. Weighting each normal by |n|^8 lets a
+   flat face decide against an edge touching it (off-axis impact), and averages two
+   alike surfaces. Falls back on -xij/|xij| when the normals cancel. */
 
 inline void contact_normal(const double *ni, const double *nj, const double *xij, double *nc)
 {
-  double a0 = ni[0] - nj[0], a1 = ni[1] - nj[1], a2 = ni[2] - nj[2];
+  const double ci2 = ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2];
+  const double cj2 = nj[0] * nj[0] + nj[1] * nj[1] + nj[2] * nj[2];
+  // |n|^8 n / |n| = |n|^7 n
+  const double wi = ci2 * ci2 * ci2 * sqrt(ci2);
+  const double wj = cj2 * cj2 * cj2 * sqrt(cj2);
+  double a0 = wi * ni[0] - wj * nj[0], a1 = wi * ni[1] - wj * nj[1], a2 = wi * ni[2] - wj * nj[2];
   double len2 = a0 * a0 + a1 * a1 + a2 * a2;
-  if (len2 < 1.0e-12) {
+  if (len2 < 1.0e-12 * (wi * wi + wj * wj) || len2 == 0.0) {
     a0 = -xij[0];
     a1 = -xij[1];
     a2 = -xij[2];
     len2 = a0 * a0 + a1 * a1 + a2 * a2;
   }
-  const double inv = (len2 > 0.0) ? 1.0 / std::sqrt(len2) : 0.0;
+  const double inv = (len2 > 0.0) ? 1.0 / sqrt(len2) : 0.0;
   nc[0] = a0 * inv;
   nc[1] = a1 * inv;
   nc[2] = a2 * inv;

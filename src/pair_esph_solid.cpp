@@ -619,8 +619,11 @@ template <int BND> void PairESPHSolid::pair_loop()
     const double mi = rmass[i];
     const int bi = body[i];
     const double *qi = hq[i];
-    double *ai = acc[i];
+    // sums for i in registers (acc[i] and acc[j] could alias for the compiler)
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    double gi[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double avhi = 0.0, heati = 0.0;
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
 
@@ -756,19 +759,19 @@ template <int BND> void PairESPHSolid::pair_loop()
       const double vg = vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2];
       const double avh = 0.5 * pi_ij * vg;
       for (int a = 0; a < 3; a++) {
-        const double wa = -vij[a];
-        ai[A_G + 3 * a] += mj * wa * g[0];
-        ai[A_G + 3 * a + 1] += mj * wa * g[1];
-        ai[A_G + 3 * a + 2] += mj * wa * g[2];
+        const double wa = -mj * vij[a];
+        gi[3 * a] += wa * g[0];
+        gi[3 * a + 1] += wa * g[1];
+        gi[3 * a + 2] += wa * g[2];
       }
-      ai[A_AVHEAT] += mj * avh;
+      avhi += mj * avh;
       if (correct_flag) {
         // x_j - x_i = -dx
         for (int a = 0; a < 3; a++) {
-          const double xa = -dx[a];
-          ai[A_M + 3 * a] += mj * xa * g[0];
-          ai[A_M + 3 * a + 1] += mj * xa * g[1];
-          ai[A_M + 3 * a + 2] += mj * xa * g[2];
+          const double xa = -mj * dx[a];
+          mci[3 * a] += xa * g[0];
+          mci[3 * a + 1] += xa * g[1];
+          mci[3 * a + 2] += xa * g[2];
         }
       }
       double heat = 0.0;
@@ -777,7 +780,7 @@ template <int BND> void PairESPHSolid::pair_loop()
         const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
         const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
         heat = 2.0 * zbar / rbar * (qi[Q_E] - qj[Q_E]) * dw * rsq / (rsq + eps * hij * hij);
-        ai[A_HEAT] += mj * heat;
+        heati += mj * heat;
       }
 
       if (jown) {
@@ -786,25 +789,33 @@ template <int BND> void PairESPHSolid::pair_loop()
         f[j][1] -= ff[1];
         f[j][2] -= ff[2];
         for (int a = 0; a < 3; a++) {
-          const double wa = -vij[a];
-          aj[A_G + 3 * a] += mi * wa * g[0];
-          aj[A_G + 3 * a + 1] += mi * wa * g[1];
-          aj[A_G + 3 * a + 2] += mi * wa * g[2];
+          const double wa = -mi * vij[a];
+          aj[A_G + 3 * a] += wa * g[0];
+          aj[A_G + 3 * a + 1] += wa * g[1];
+          aj[A_G + 3 * a + 2] += wa * g[2];
         }
         aj[A_AVHEAT] += mi * avh;
         if (heat_flag) aj[A_HEAT] -= mi * heat;
         if (correct_flag)
           for (int a = 0; a < 3; a++) {
-            const double xa = -dx[a];
-            aj[A_M + 3 * a] += mi * xa * g[0];
-            aj[A_M + 3 * a + 1] += mi * xa * g[1];
-            aj[A_M + 3 * a + 2] += mi * xa * g[2];
+            const double xa = -mi * dx[a];
+            aj[A_M + 3 * a] += xa * g[0];
+            aj[A_M + 3 * a + 1] += xa * g[1];
+            aj[A_M + 3 * a + 2] += xa * g[2];
           }
       }
     }
     f[i][0] += fxi;
     f[i][1] += fyi;
     f[i][2] += fzi;
+    if (mi > 0.0) {
+      double *ai = acc[i];
+      for (int k = 0; k < 9; k++) ai[A_G + k] += gi[k];
+      ai[A_AVHEAT] += avhi;
+      ai[A_HEAT] += heati;
+      if (correct_flag)
+        for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
+    }
   }
 }
 
@@ -860,11 +871,12 @@ void PairESPHSolid::finalize(int eflag)
         const double n2 = a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] +
             a[A_NSUM + 2] * a[A_NSUM + 2];
         if (n2 > 0.0 && a[A_WSUM] > 0.0) {
-          const double inv = 1.0 / sqrt(n2);
+          // eq. (30), the length kept as the coherence |sum n_k W| / sum W <= 1
+          const double inv = 1.0 / a[A_WSUM];
           state->n[i][0] = a[A_NSUM] * inv;
           state->n[i][1] = a[A_NSUM + 1] * inv;
           state->n[i][2] = a[A_NSUM + 2] * inv;
-          state->depth[i] = a[A_DSUM] / a[A_WSUM];
+          state->depth[i] = a[A_DSUM] * inv;
         } else {
           state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
           state->depth[i] = 0.0;
@@ -987,9 +999,9 @@ void PairESPHSolid::compute_normals()
     const double n2 =
         a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
     if (n2 > 0.0 && a[A_WSUM] > 0.0) {
-      const double inv = 1.0 / sqrt(n2);
+      const double inv = 1.0 / a[A_WSUM];
       for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
-      state->depth[i] = a[A_DSUM] / a[A_WSUM];
+      state->depth[i] = a[A_DSUM] * inv;
     } else {
       state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
       state->depth[i] = 0.0;

@@ -26,19 +26,25 @@ def parse_args():
 
 
 def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900):
-    """run lmp -in infile (copied into the work dir) with -var overrides; return the log text"""
-    src = infile if os.path.isabs(infile) else os.path.join(EXAMPLES, infile)
-    dst = os.path.join(args.workdir, os.path.basename(src))
-    if os.path.abspath(src) != os.path.abspath(dst):
-        shutil.copy(src, dst)
-    cmd = [args.lmp, "-in", os.path.basename(dst), "-log", log, "-nocite", "-screen", "none"]
+    """run lmp -in infile with -var overrides; return the log text. An example input
+    (path relative to examples/) runs in a copy of the examples tree inside the work dir,
+    so that inputs that include others (../rod_impact/in.rod_impact) find them."""
+    if os.path.isabs(infile):
+        cwd, name = os.path.dirname(infile), os.path.basename(infile)
+    else:
+        tree = os.path.join(args.workdir, "examples")
+        if not os.path.isdir(tree):
+            shutil.copytree(EXAMPLES, tree, ignore=shutil.ignore_patterns("log.*"))
+        cwd, name = os.path.join(tree, os.path.dirname(infile)), os.path.basename(infile)
+    cmd = [args.lmp, "-in", name, "-log", log, "-nocite", "-screen", "none"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     if np > 1:
         cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np)] + cmd
-    r = subprocess.run(cmd, cwd=args.workdir, capture_output=True, text=True, timeout=timeout)
-    logpath = os.path.join(args.workdir, log)
+    r = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    logpath = os.path.join(cwd, log)
     text = open(logpath).read() if os.path.exists(logpath) else ""
+    args.lastdir = cwd
     if r.returncode != 0:
         sys.stdout.write(r.stdout[-3000:] + r.stderr[-3000:] + text[-3000:])
         raise RuntimeError("lmp failed: " + " ".join(cmd))

@@ -15,7 +15,7 @@ CP, L, V = 5134.4, 20.0, 50.0
 log = et.run(a, "rod_impact/in.rod_impact",
              {"dim": 1, "dx": 0.1, "contact": "off", "tend": 3.0, "thermo_every": 50})
 blocks, cur = {}, None
-for line in open(f"{a.workdir}/profile.off.1d.txt"):
+for line in open(f"{a.lastdir}/profile.off.1d.txt"):
     if line.startswith("#"):
         continue
     p = line.split()

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""Hard cases beyond the paper's scene (coarse variants of examples/unequal_rods,
+dissimilar_rods, fast_impact, offaxis_rods, free_bar). Theory: 1D bar / impedance
+theory with the uniaxial-strain wave speed c_p = sqrt((K + 4/3 G)/rho0)."""
+import numpy as np
+
+import esphtest as et
+
+a = et.parse_args()
+c = et.Checks("hard cases")
+MAT = {"iron": (7850.0, 80.0e9, 3574.0), "aluminum": (2703.0, 27.6e9, 5240.0)}
+
+
+def cp(m):
+    rho, G, c0 = MAT[m]
+    return np.sqrt((rho * c0 ** 2 + 4.0 / 3.0 * G) / rho)
+
+
+# 1. unequal rods: 10 mm striker on a 20 mm target (1D)
+log = et.run(a, "unequal_rods/in.unequal_rods", {"dim": 1, "dx": 0.1, "out": 0, "tend": 12})
+s = et.summary(log)
+print("INFO unequal:", s)
+tc = 2 * 10e-3 / cp("iron") * 1e6
+# measured +4.3 %: after the release the striker rests on the target with a decaying,
+# ringing contact force that stays above 1 % of the peak for ~0.17 us (30 steps)
+c.near("unequal: contact time [us]", s["contact_time_us"], tc, 0.05 * tc,
+       "bar theory 2 L_striker / c_p; 5 %: the force tail of the spread release")
+c.near("unequal: striker after contact [m/s]", s["v_impactor"], 0.0, 0.5, "striker stops")
+c.near("unequal: target mean velocity [m/s]", s["v_target"], 25.0, 0.5, "V L_striker / L_target")
+
+# 2. dissimilar materials, both directions (1D): interface velocity Z_i V / (Z_i + Z_t)
+for mi, mt in (("aluminum", "iron"), ("iron", "aluminum")):
+    log = et.run(a, "dissimilar_rods/in.dissimilar_rods",
+                 {"dim": 1, "dx": 0.1, "tend": 12, "mat_imp": mi, "mat_tgt": mt},
+                 log=f"log.{mi}")
+    s = et.summary(log)
+    zi, zt = MAT[mi][0] * cp(mi), MAT[mt][0] * cp(mt)
+    u = zi * 50.0 / (zi + zt)
+    blocks, cur = {}, None
+    for line in open(f"{a.lastdir}/profile.solid.1d.txt"):
+        p = line.split()
+        if line.startswith("#"):
+            continue
+        if len(p) == 3:
+            cur = int(p[0])
+            blocks[cur] = []
+        elif len(p) == 4 and float(p[2]) > 0:
+            blocks[cur].append((float(p[1]) * 1e3, float(p[3])))
+    prof = np.array(blocks[sorted(blocks)[1]])    # 3 us
+    near = prof[np.abs(prof[:, 0]) < 5.0, 1]
+    print(f"INFO {mi} on {mt}: interface velocity {near.mean():.3f} (theory {u:.3f}); summary {s}")
+    c.near(f"{mi} on {mt}: interface velocity at 3 us [m/s]", near.mean(), u, 0.02 * u,
+           "1D impedance-mismatch theory, Z = rho c_p; 2 % for the Mie-Grueneisen non-linearity")
+    c.less(f"{mi} on {mt}: momentum drift", s["momentum_drift_rel"], 1e-12, "round-off")
+    c.less(f"{mi} on {mt}: energy drift [%]", abs(s["energy_drift_pct"]), 0.5, "REFERENCES 7")
+
+# 3. fast impact, 200 and 500 m/s, 1D and coarse 3D: no interpenetration, no blow-up
+for dim, dx, V in ((1, 0.1, 200), (1, 0.1, 500), (3, 0.25, 500)):
+    log = et.run(a, "fast_impact/in.fast_impact",
+                 {"dim": dim, "dx": dx, "V": V, "tend": 10, "out": 0, "thermo_every": 20},
+                 log=f"log.fast{dim}{V}")
+    s = et.summary(log)
+    th = et.thermo(log)[-1]
+    gmin = min(th["v_gapmm"])
+    print(f"INFO fast {dim}D {V} m/s: {s}, min gap {gmin:.4f} mm")
+    c.true(f"fast {dim}D {V} m/s: finite results", all(np.isfinite(list(s.values()))), "no blow-up")
+    c.less(f"fast {dim}D {V} m/s: interpenetration [spacings]", -gmin / dx, 0.5,
+           "facing surfaces never overlap by half a spacing")
+    c.less(f"fast {dim}D {V} m/s: energy drift [%]", abs(s["energy_drift_pct"]), 1.0,
+           "energy accounted for (AV heat included)")
+    c.less(f"fast {dim}D {V} m/s: momentum drift", s["momentum_drift_rel"], 1e-12, "round-off")
+
+# 4. off-axis impact (target offset by R/2), coarse 3D, corrected gradient
+log = et.run(a, "offaxis_rods/in.offaxis_rods", {"dx": 0.25, "tend": 12, "out": 0,
+                                                 "thermo_every": 50}, log="log.offaxis")
+s = et.summary(log)
+th = et.thermo(log)[-1]
+p0 = 50.0 * 7850 * (0.25e-3) ** 3 * 4160    # order of the impactor momentum
+py = np.abs(np.array(th["c_pyimp"])).max()
+Lz = np.array(th["v_Lz"])
+print(f"INFO offaxis: {s}; max |p_y(impactor)| {py:.3e}, L_z {Lz[0]:.4e} -> {Lz[-1]:.4e}")
+c.less("off-axis: momentum drift", s["momentum_drift_rel"], 1e-12, "pairwise forces")
+# lateral momentum of the impactor: the pair forces across the interface are along the
+# contact normal (frictionless by construction); the rods bend, their end faces tilt by a
+# few degrees and the normal force gets a lateral component (measured 7 % of p0)
+print(f"INFO off-axis: lateral impulse / axial momentum {py / p0:.4f}")
+c.less("off-axis: lateral impulse / axial momentum", py / p0, 0.15,
+       "end-face tilt of the bending rods (a few degrees)")
+c.less("off-axis: energy drift [%]", abs(s["energy_drift_pct"]), 0.5, "REFERENCES 7")
+c.less("off-axis: angular momentum drift (relative)", abs(Lz[-1] - Lz[0]) / abs(Lz[0]), 1e-2,
+       "SPH stress forces are not central: approximate, REFERENCES 7")
+
+# 8. long run: free bar, 1e5 steps (with the default viscosity). Without viscosity the
+# predictor-corrector stress update is weakly unstable at CFL 0.3 (blow-up after ~8000
+# steps; stable at CFL 0.1): documented in doc/hard_cases.md, not asserted here.
+log = et.run(a, "free_bar/in.free_bar", {"nsteps": 100000}, log="log.bar")
+s = et.summary(log, "FREE_BAR")
+d = np.loadtxt(f"{a.lastdir}/free_bar.end", skiprows=9)
+xs = np.sort(d[:, 1])
+gap = np.diff(xs).min() / 0.2e-3
+print(f"INFO free bar: {s}, smallest spacing {gap:.3f} dx")
+c.true("free bar: no NaN after 1e5 steps", np.all(np.isfinite(d)), "stable")
+c.less("free bar: energy drift [%]", abs(s["energy_drift_pct"]), 0.1,
+       "compatible energy equation; the viscosity turns vibration into heat")
+c.less("free bar: clumping (1 - smallest spacing / dx)", 1 - gap, 0.1,
+       "no pairing: particles stay about one spacing apart")
+c.done()
