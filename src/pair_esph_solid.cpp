@@ -572,10 +572,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
-  if (bnd)
-    pair_loop<1>();
-  else
-    pair_loop<0>();
+  run_pair_loop(bnd);
 
   if (force->newton_pair) {
     comm_stage = COMM_ACC;
@@ -593,7 +590,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
      the real particle's normal sums (eq. 30)
 ------------------------------------------------------------------------- */
 
-template <int BND> void PairESPHSolid::pair_loop()
+template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
 {
   double **x = atom->x;
   double **f = atom->f;
@@ -637,7 +634,7 @@ template <int BND> void PairESPHSolid::pair_loop()
       const double *qj = hq[j];
 
       double hij, norm, hinv;
-      if (hvar_flag) {
+      if (HVAR) {
         hij = 0.5 * (qi[Q_H] + qj[Q_H]);
         hinv = 1.0 / hij;
         norm = kernel_norm(kernel, dim, hij);
@@ -765,7 +762,7 @@ template <int BND> void PairESPHSolid::pair_loop()
         gi[3 * a + 2] += wa * g[2];
       }
       avhi += mj * avh;
-      if (correct_flag) {
+      if (CORR) {
         // x_j - x_i = -dx
         for (int a = 0; a < 3; a++) {
           const double xa = -mj * dx[a];
@@ -775,7 +772,7 @@ template <int BND> void PairESPHSolid::pair_loop()
         }
       }
       double heat = 0.0;
-      if (heat_flag && !cross) {
+      if (HEAT && !cross) {
         // artificial heat transfer (eqs. 8-10), conservative pairwise form
         const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
         const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
@@ -795,8 +792,8 @@ template <int BND> void PairESPHSolid::pair_loop()
           aj[A_G + 3 * a + 2] += wa * g[2];
         }
         aj[A_AVHEAT] += mi * avh;
-        if (heat_flag) aj[A_HEAT] -= mi * heat;
-        if (correct_flag)
+        if (HEAT) aj[A_HEAT] -= mi * heat;
+        if (CORR)
           for (int a = 0; a < 3; a++) {
             const double xa = -mi * dx[a];
             aj[A_M + 3 * a] += xa * g[0];
@@ -812,15 +809,40 @@ template <int BND> void PairESPHSolid::pair_loop()
       double *ai = acc[i];
       for (int k = 0; k < 9; k++) ai[A_G + k] += gi[k];
       ai[A_AVHEAT] += avhi;
-      ai[A_HEAT] += heati;
-      if (correct_flag)
+      if (HEAT) ai[A_HEAT] += heati;
+      if (CORR)
         for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
     }
   }
 }
 
-template void PairESPHSolid::pair_loop<0>();
-template void PairESPHSolid::pair_loop<1>();
+
+/* ----------------------------------------------------------------------
+   dispatch: optional physics switched off is compiled out of the pair loop
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::run_pair_loop(int bnd)
+{
+  const int key = (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
+  switch (key) {
+    case 0: pair_loop<0, 0, 0, 0>(); break;
+    case 1: pair_loop<0, 0, 0, 1>(); break;
+    case 2: pair_loop<0, 0, 1, 0>(); break;
+    case 3: pair_loop<0, 0, 1, 1>(); break;
+    case 4: pair_loop<0, 1, 0, 0>(); break;
+    case 5: pair_loop<0, 1, 0, 1>(); break;
+    case 6: pair_loop<0, 1, 1, 0>(); break;
+    case 7: pair_loop<0, 1, 1, 1>(); break;
+    case 8: pair_loop<1, 0, 0, 0>(); break;
+    case 9: pair_loop<1, 0, 0, 1>(); break;
+    case 10: pair_loop<1, 0, 1, 0>(); break;
+    case 11: pair_loop<1, 0, 1, 1>(); break;
+    case 12: pair_loop<1, 1, 0, 0>(); break;
+    case 13: pair_loop<1, 1, 0, 1>(); break;
+    case 14: pair_loop<1, 1, 1, 0>(); break;
+    default: pair_loop<1, 1, 1, 1>(); break;
+  }
+}
 
 /* ----------------------------------------------------------------------
    turn accumulated sums into rates (per particle, after reverse comm)

@@ -95,7 +95,8 @@ class PairESPHSolid : public Pair {
   void hoist();
   void finalize(int eflag);
   void compute_normals();
-  template <int CONTACT> void pair_loop();
+  void run_pair_loop(int);
+  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop();
 };
 
 }    // namespace LAMMPS_NS
