@@ -82,6 +82,8 @@ def main():
     p.add_argument("examples")
     a = p.parse_args()
     a.lmp = os.path.abspath(a.lmp)
+    a.examples = os.path.abspath(a.examples)
+    shutil.rmtree(a.workdir, ignore_errors=True)
     cfg = yaml.safe_load(open(a.config))
     npass = nfail = 0
     for name, icfg in cfg.get("inputs", {}).items():
@@ -92,9 +94,11 @@ def main():
                 refs = sorted(glob.glob(os.path.join(case_dir, f"log.*.{short}.g++.{np_}")))
                 if not refs and not a.gen_ref:
                     continue
-                work = os.path.join(a.workdir, os.path.basename(case_dir) + f".{np_}")
-                shutil.rmtree(work, ignore_errors=True)
-                shutil.copytree(case_dir, work)
+                # a scratch copy of the whole examples tree: inputs may include others
+                tree = os.path.join(a.workdir, f"np{np_}")
+                if not os.path.isdir(tree):
+                    shutil.copytree(a.examples, tree, ignore=shutil.ignore_patterns("log.*"))
+                work = os.path.join(tree, os.path.basename(case_dir))
                 cmd = [a.lmp, "-in", name, "-log", "log.test", "-nocite", "-screen", "none"]
                 cmd += icfg.get("args", "").split()
                 if np_ > 1:
