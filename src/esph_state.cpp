@@ -44,8 +44,8 @@ void ESPHState::ensure(LAMMPS *lmp)
 /* ---------------------------------------------------------------------- */
 
 ESPHState::ESPHState(LAMMPS *_lmp) :
-    rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr),
-    depth(nullptr), body(nullptr), lmp(_lmp)
+    rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
+    body(nullptr), lmp(_lmp)
 {
   ensure(lmp);
   int flag, cols;

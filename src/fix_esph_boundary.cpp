@@ -69,8 +69,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary spacing", error);
       spacing = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (spacing <= 0.0)
-        error->all(FLERR, iarg + 1, "Fix esph/boundary spacing must be > 0, got {}",
-                   arg[iarg + 1]);
+        error->all(FLERR, iarg + 1, "Fix esph/boundary spacing must be > 0, got {}", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "type") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary type", error);

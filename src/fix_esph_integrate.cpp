@@ -23,9 +23,9 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "memory.h"
 #include "esph_state.h"
 #include "force.h"
+#include "memory.h"
 #include "modify.h"
 #include "output.h"
 #include "pair_esph_solid.h"
@@ -286,8 +286,7 @@ void FixESPHIntegrate::final_integrate()
   // An episode is a period with F above that level; interruptions of up to HOLD_STEPS
   // steps belong to the same episode.
   if (pair->nboundary > 0) {
-    double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs,
-                       pair->fcontact};
+    double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs, pair->fcontact};
     double total[3];
     MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
     const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;

@@ -52,22 +52,23 @@ static constexpr int A_HEAT = 10;     // artificial heat transfer
 static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
 static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
 static constexpr int A_WSUM = 15;     // sum_k W_ik
-static constexpr int A_M = 16;        // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
+static constexpr int A_M =
+    16;    // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
 // boundary particles
-static constexpr int B_A = 0;         // 0..8: sum_p V_p v_p (x) grad_k W_kp
-static constexpr int B_B = 9;         // 9..11: sum_p V_p grad_k W_kp
-static constexpr int B_VSUM = 12;     // 12..14: sum_p V_p W_kp v_p
-static constexpr int B_WSUM = 15;     // sum_p V_p W_kp
-static constexpr int B_M = 16;        // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
-static constexpr int B_XSUM = 25;     // 25..27: sum_p V_p W_kp (x_p - x_k)
+static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
+static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
+static constexpr int B_VSUM = 12;    // 12..14: sum_p V_p W_kp v_p
+static constexpr int B_WSUM = 15;    // sum_p V_p W_kp
+static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
+static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
 
 // slots of the hoisted array hq[i][*]
-static constexpr int Q_V = 0;         // 0..2 predicted velocity
+static constexpr int Q_V = 0;    // 0..2 predicted velocity
 static constexpr int Q_RHO = 3;
 static constexpr int Q_C = 4;
 static constexpr int Q_H = 5;
-static constexpr int Q_A = 6;         // 6..11 sigma / rho^2 (Voigt)
-static constexpr int Q_N = 12;        // 12..14 normal
+static constexpr int Q_A = 6;     // 6..11 sigma / rho^2 (Voigt)
+static constexpr int Q_N = 12;    // 12..14 normal
 static constexpr int Q_DEPTH = 15;
 static constexpr int Q_E = 16;
 static constexpr int Q_ZETA = 17;
@@ -249,7 +250,8 @@ void PairESPHSolid::settings(int narg, char **arg)
         correct_flag = 1;
       else
         error->all(FLERR, iarg + 2,
-                   "Unknown pair esph/solid gradient {}: expected plain or corrected", arg[iarg + 1]);
+                   "Unknown pair esph/solid gradient {}: expected plain or corrected",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
@@ -816,31 +818,63 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
   }
 }
 
-
 /* ----------------------------------------------------------------------
    dispatch: optional physics switched off is compiled out of the pair loop
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::run_pair_loop(int bnd)
 {
-  const int key = (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
+  const int key =
+      (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
   switch (key) {
-    case 0: pair_loop<0, 0, 0, 0>(); break;
-    case 1: pair_loop<0, 0, 0, 1>(); break;
-    case 2: pair_loop<0, 0, 1, 0>(); break;
-    case 3: pair_loop<0, 0, 1, 1>(); break;
-    case 4: pair_loop<0, 1, 0, 0>(); break;
-    case 5: pair_loop<0, 1, 0, 1>(); break;
-    case 6: pair_loop<0, 1, 1, 0>(); break;
-    case 7: pair_loop<0, 1, 1, 1>(); break;
-    case 8: pair_loop<1, 0, 0, 0>(); break;
-    case 9: pair_loop<1, 0, 0, 1>(); break;
-    case 10: pair_loop<1, 0, 1, 0>(); break;
-    case 11: pair_loop<1, 0, 1, 1>(); break;
-    case 12: pair_loop<1, 1, 0, 0>(); break;
-    case 13: pair_loop<1, 1, 0, 1>(); break;
-    case 14: pair_loop<1, 1, 1, 0>(); break;
-    default: pair_loop<1, 1, 1, 1>(); break;
+    case 0:
+      pair_loop<0, 0, 0, 0>();
+      break;
+    case 1:
+      pair_loop<0, 0, 0, 1>();
+      break;
+    case 2:
+      pair_loop<0, 0, 1, 0>();
+      break;
+    case 3:
+      pair_loop<0, 0, 1, 1>();
+      break;
+    case 4:
+      pair_loop<0, 1, 0, 0>();
+      break;
+    case 5:
+      pair_loop<0, 1, 0, 1>();
+      break;
+    case 6:
+      pair_loop<0, 1, 1, 0>();
+      break;
+    case 7:
+      pair_loop<0, 1, 1, 1>();
+      break;
+    case 8:
+      pair_loop<1, 0, 0, 0>();
+      break;
+    case 9:
+      pair_loop<1, 0, 0, 1>();
+      break;
+    case 10:
+      pair_loop<1, 0, 1, 0>();
+      break;
+    case 11:
+      pair_loop<1, 0, 1, 1>();
+      break;
+    case 12:
+      pair_loop<1, 1, 0, 0>();
+      break;
+    case 13:
+      pair_loop<1, 1, 0, 1>();
+      break;
+    case 14:
+      pair_loop<1, 1, 1, 0>();
+      break;
+    default:
+      pair_loop<1, 1, 1, 1>();
+      break;
   }
 }
 
@@ -890,8 +924,8 @@ void PairESPHSolid::finalize(int eflag)
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
       if (bnd) {
-        const double n2 = a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] +
-            a[A_NSUM + 2] * a[A_NSUM + 2];
+        const double n2 =
+            a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
         if (n2 > 0.0 && a[A_WSUM] > 0.0) {
           // eq. (30), the length kept as the coherence |sum n_k W| / sum W <= 1
           const double inv = 1.0 / a[A_WSUM];
@@ -1034,8 +1068,7 @@ void PairESPHSolid::compute_normals()
 
 /* ---------------------------------------------------------------------- */
 
-int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
-                                     int * /*pbc*/)
+int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
   if (comm_stage == COMM_NORMALS) {

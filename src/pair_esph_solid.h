@@ -52,18 +52,18 @@ class PairESPHSolid : public Pair {
 
  protected:
   // global settings
-  double h0;                        // initial smoothing length
-  double cut_global;                // neighbour cutoff = support * h0 * hmax
-  int kernel;                       // ESPH::KernelType
-  int dim;                          // kernel dimension (1, 2, 3)
-  double alpha, beta, eps;          // Monaghan-Gingold viscosity
-  int heat_flag;                    // artificial heat transfer (eqs. 8-10)
+  double h0;                  // initial smoothing length
+  double cut_global;          // neighbour cutoff = support * h0 * hmax
+  int kernel;                 // ESPH::KernelType
+  int dim;                    // kernel dimension (1, 2, 3)
+  double alpha, beta, eps;    // Monaghan-Gingold viscosity
+  int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
-  int hvar_flag;                    // variable smoothing length (eq. 24)
-  double hmax;                      // allowed growth of h (cutoff factor)
-  int contact;                      // ESPH::ContactRule
-  double gaptol;                    // contact gap tolerance (fraction of h0)
-  int correct_flag;                 // kernel-gradient corrected velocity gradient
+  int hvar_flag;       // variable smoothing length (eq. 24)
+  double hmax;         // allowed growth of h (cutoff factor)
+  int contact;         // ESPH::ContactRule
+  double gaptol;       // contact gap tolerance (fraction of h0)
+  int correct_flag;    // kernel-gradient corrected velocity gradient
 
   // per-type material
   ESPH::EOS *eos;
@@ -72,20 +72,20 @@ class PairESPHSolid : public Pair {
 
   // per-atom work arrays
   int nmax;
-  double **acc;       // accumulated sums, NACC per atom (reverse communicated)
-  double **hq;        // hoisted quantities, NHQ per atom (forward communicated)
+  double **acc;                    // accumulated sums, NACC per atom (reverse communicated)
+  double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
   double *drho, *de, *dh, **ds;    // rates for the integrator
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
   int comm_stage;
   int nforward, nreverse;
 
-  int pred_valid;         // inside a step: the integrator's predicted end-of-step state is valid
-  int normals_valid;      // stored real-particle normals are current
-  double dt_cfl;          // local CFL time step estimate (min h / (c_L + |v|))
-  int ncontact_pairs;     // cross-body pairs interacting in the last compute (local)
-  int ntouch_pairs;       // cross-body pairs whose surfaces touch (gap <= tolerance)
-  double fcontact;        // sum of transmitted compressive normal pair forces (local)
-  bigint nboundary;       // number of boundary (zero-mass) particles, counted at setup
+  int pred_valid;        // inside a step: the integrator's predicted end-of-step state is valid
+  int normals_valid;     // stored real-particle normals are current
+  double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
+  int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
+  int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
+  double fcontact;       // sum of transmitted compressive normal pair forces (local)
+  bigint nboundary;      // number of boundary (zero-mass) particles, counted at setup
 
   class ESPHState *state;
   class FixESPHIntegrate *fix_int;
