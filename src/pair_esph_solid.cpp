@@ -93,6 +93,25 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
 
   h0 = 0.0;
   cut_global = 0.0;
+  set_defaults();
+
+  pred_valid = 0;
+  normals_valid = 0;
+  dt_cfl = 0.0;
+  ncontact_pairs = ntouch_pairs = 0;
+  fcontact = 0.0;
+  comm_stage = COMM_HOIST;
+  nforward = nreverse = 0;
+
+  state = new ESPHState(lmp);
+}
+
+/* ----------------------------------------------------------------------
+   defaults of the optional pair_style keywords
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::set_defaults()
+{
   kernel = CUBIC;
   dim = domain->dimension;
   alpha = beta = 1.0;
@@ -104,16 +123,6 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   contact = CONTACT_SOLID;
   gaptol = 1.0e-3;
   correct_flag = 0;
-
-  pred_valid = 0;
-  normals_valid = 0;
-  dt_cfl = 0.0;
-  ncontact_pairs = ntouch_pairs = 0;
-  fcontact = 0.0;
-  comm_stage = COMM_HOIST;
-  nforward = nreverse = 0;
-
-  state = new ESPHState(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -167,17 +176,7 @@ void PairESPHSolid::settings(int narg, char **arg)
 {
   if (narg < 1) utils::missing_cmd_args(FLERR, "pair_style esph/solid", error);
   // a new pair_style command starts from the defaults
-  kernel = CUBIC;
-  dim = domain->dimension;
-  alpha = beta = 1.0;
-  eps = 0.1;
-  heat_flag = 0;
-  g1 = g2 = 0.0;
-  hvar_flag = 0;
-  hmax = 1.0;
-  contact = CONTACT_SOLID;
-  gaptol = 1.0e-3;
-  correct_flag = 0;
+  set_defaults();
   h0 = utils::numeric(FLERR, arg[0], false, lmp);
   if (h0 <= 0.0)
     error->all(FLERR, 1, "Pair esph/solid smoothing length h must be > 0, got {}", arg[0]);
@@ -526,16 +525,18 @@ void PairESPHSolid::hoist()
       q[Q_A + 4] = sp[4] * inv;
       q[Q_A + 5] = sp[5] * inv;
       q[Q_E] = e;
-      if (heat_flag) {
-        const double divv = p ? p[FixESPHIntegrate::P_DIVV] : -drho[i] / rho;
-        q[Q_ZETA] = g1 * h * c + g2 * h * h * (fabs(divv) - divv);
-      } else {
-        q[Q_ZETA] = 0.0;
-      }
       // CFL with the longitudinal wave speed
       const double cl = sqrt(c2 + 4.0 * shear[itype] / (3.0 * rho));
       const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
-      const double dti = h / (cl + vmag);
+      double dti = h / (cl + vmag);
+      if (heat_flag) {
+        const double divv = p ? p[FixESPHIntegrate::P_DIVV] : -drho[i] / rho;
+        q[Q_ZETA] = g1 * h * c + g2 * h * h * (fabs(divv) - divv);
+        // explicit diffusion with diffusivity zeta: dt <= h^2 / (2 D zeta)
+        if (q[Q_ZETA] > 0.0) dti = MIN(dti, h * h / (2.0 * dim * q[Q_ZETA]));
+      } else {
+        q[Q_ZETA] = 0.0;
+      }
       if (dti < dtmin) dtmin = dti;
       if (hvar_flag && h > hlimit)
         error->one(FLERR, Error::NOLASTLINE,

@@ -91,6 +91,7 @@ class PairESPHSolid : public Pair {
   class FixESPHIntegrate *fix_int;
 
   virtual void allocate();
+  void set_defaults();
   void grow_work();
   void hoist();
   void finalize(int eflag);

@@ -36,17 +36,8 @@ for mi, mt in (("aluminum", "iron"), ("iron", "aluminum")):
     s = et.summary(log)
     zi, zt = MAT[mi][0] * cp(mi), MAT[mt][0] * cp(mt)
     u = zi * 50.0 / (zi + zt)
-    blocks, cur = {}, None
-    for line in open(f"{a.lastdir}/profile.solid.1d.txt"):
-        p = line.split()
-        if line.startswith("#"):
-            continue
-        if len(p) == 3:
-            cur = int(p[0])
-            blocks[cur] = []
-        elif len(p) == 4 and float(p[2]) > 0:
-            blocks[cur].append((float(p[1]) * 1e3, float(p[3])))
-    prof = np.array(blocks[sorted(blocks)[1]])    # 3 us
+    blocks = et.profiles(f"{a.lastdir}/profile.solid.1d.txt")
+    prof = blocks[sorted(blocks)[1]]    # 3 us
     near = prof[np.abs(prof[:, 0]) < 5.0, 1]
     print(f"INFO {mi} on {mt}: interface velocity {near.mean():.3f} (theory {u:.3f}); summary {s}")
     c.near(f"{mi} on {mt}: interface velocity at 3 us [m/s]", near.mean(), u, 0.02 * u,

@@ -14,18 +14,8 @@ CP, L, V = 5134.4, 20.0, 50.0
 # --- profile at 3 us, no contact handling needed before separation ---
 log = et.run(a, "rod_impact/in.rod_impact",
              {"dim": 1, "dx": 0.1, "contact": "off", "tend": 3.0, "thermo_every": 50})
-blocks, cur = {}, None
-for line in open(f"{a.lastdir}/profile.off.1d.txt"):
-    if line.startswith("#"):
-        continue
-    p = line.split()
-    if len(p) == 3:
-        cur = int(p[0])
-        blocks[cur] = []
-    elif len(p) == 4 and float(p[2]) > 0:
-        blocks[cur].append((float(p[1]) * 1e3, float(p[3])))
-step3 = max(blocks)
-prof = np.array(blocks[step3])
+blocks = et.profiles(f"{a.lastdir}/profile.off.1d.txt")
+prof = blocks[max(blocks)]
 x, v = prof[:, 0], prof[:, 1]
 t = 3.0e-6
 front = CP * t * 1e3                    # mm, reference coordinates
