@@ -597,6 +597,7 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
 {
   double **x = atom->x;
   double **f = atom->f;
+  const tagint *tag = atom->tag;
   const double *rmass = state->rmass;
   const int *body = state->body;
   const int nlocal = atom->nlocal;
@@ -739,13 +740,15 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
       if (cross) {
         double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
         const double gap = contact_gap(dx, nc, qi[Q_DEPTH], qj[Q_DEPTH]);
-        if (gap <= gap_tol) ntouch_pairs++;
+        // with newton off a pair with a ghost partner is on two ranks: count it once
+        const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
+        if (gap <= gap_tol && count_pair) ntouch_pairs++;
         if (!contact_gate(contact, gap, gap_tol, vn, xn, fn)) continue;
         if (contact == CONTACT_SOLID && fn > 0.0) fn = 0.0;    // no tension across contact
         ff[0] = fn * nc[0];
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];
-        ncontact_pairs++;
+        if (count_pair) ncontact_pairs++;
         // transmitted compressive normal force; with newton off a pair with a ghost
         // partner is seen by two ranks
         fcontact -= (newton_pair || j < nlocal) ? fn : 0.5 * fn;

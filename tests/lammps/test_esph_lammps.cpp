@@ -5,6 +5,7 @@
 #include "info.h"
 #include "input.h"
 #include "lammps.h"
+#include "fix.h"
 #include "modify.h"
 #include "update.h"
 
@@ -200,6 +201,33 @@ TEST_F(ESPHTest, BoundaryWithoutBody)
   END_HIDE_OUTPUT();
   TEST_FAILURE(".*ERROR: Body 0 has real particles but no boundary particles in fix "
                "esph/boundary.*",
+               command("run 0 post no"););
+}
+
+// user-supplied boundary particles (fix esph/boundary given): zero-mass atoms with
+// normals set by hand are accepted; a normal that is not a unit vector is an error
+TEST_F(ESPHTest, GivenBoundaryParticles)
+{
+  block(4);
+  BEGIN_HIDE_OUTPUT();
+  command("fix 1 all esph/integrate");
+  command("create_atoms 1 single -0.5e-4 2e-4 2e-4 units box");
+  command("create_atoms 1 single -0.5e-4 1e-4 2e-4 units box");
+  command("group bnd id 65 66");
+  command("variable zero atom 0.0");
+  command("set group bnd mass v_zero");
+  command("set group bnd d2_esph_n[1] -1.0");
+  command("fix b all esph/boundary given");
+  command("run 0 post no");
+  END_HIDE_OUTPUT();
+  auto *fix = lmp->modify->get_fix_by_id("b");
+  ASSERT_NE(fix, nullptr);
+  EXPECT_DOUBLE_EQ(fix->compute_scalar(), 2.0);
+  BEGIN_HIDE_OUTPUT();
+  command("set atom 66 d2_esph_n[2] 1.0");    // length sqrt(2)
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR on proc 0: Boundary particle 66 of fix esph/boundary has a normal of "
+               "length 1.41.*, not a unit normal.*",
                command("run 0 post no"););
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The same input on 1, 2 and 4 MPI ranks gives the same thermo output to round-off.
+"""The same input on 1, 2 and 4 MPI ranks, and with newton off, gives the same thermo output
+to round-off.
 3D rods with contact, coarse (dx = 0.25 mm): with 2 and 4 ranks the sub-domain boundary
 x = 0 cuts the contact interface. Also 1D, contact off (pure solid core).
 Tolerance: relative 1e-10 on every thermo column (printed with 15 digits) over ~360 steps. Sums over neighbours
@@ -41,4 +42,15 @@ for name, var in cases.items():
         print(f"INFO {name} np={np_}: worst relative difference {worst:.3e} in {col}")
         c.less(f"{name}: np {np_} vs np 1, max relative difference", worst, 1.0e-10,
                "summation order only")
+
+# newton off (pairs with ghost partners computed on both ranks) against newton on
+ref = et.thermo(et.run(a, "rod_impact/in.rod_impact", cases["3d-contact"], log="log.non"))[-1]
+for np_ in (1, 2):
+    off = et.thermo(et.run(a, "rod_impact/in.rod_impact", dict(cases["3d-contact"], newton="off"),
+                           np=np_, log=f"log.noff.{np_}"))[-1]
+    worst = max(np.abs(np.array(ref[k]) - np.array(off[k])).max() / max(np.abs(ref[k]).max(), 1e-4)
+                for k in ref)
+    print(f"INFO newton off np={np_}: worst relative difference {worst:.3e}")
+    c.less(f"newton off, np {np_} vs newton on: max relative difference", worst, 1.0e-10,
+           "summation order only")
 c.done()
