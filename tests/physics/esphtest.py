@@ -22,6 +22,8 @@ def parse_args():
     a.lmp = os.path.abspath(a.lmp)
     a.workdir = os.path.abspath(a.workdir)
     os.makedirs(a.workdir, exist_ok=True)
+    # a fresh copy of the examples per test run: never run stale inputs
+    shutil.rmtree(os.path.join(a.workdir, "examples"), ignore_errors=True)
     return a
 
 
