@@ -22,6 +22,7 @@ C_P = 5134.4                       # m/s, uniaxial strain
 
 
 def read_profiles(path):
+    """blocks of a fix ave/chunk profile file: {timestep: array of (x [mm], v_x)}"""
     blocks, cur = {}, None
     for line in open(path):
         if line.startswith("#"):
@@ -32,7 +33,7 @@ def read_profiles(path):
             blocks[cur] = []
         elif len(p) == 4 and float(p[2]) > 0:
             blocks[cur].append((float(p[1]) * 1e3, float(p[3])))
-    return [np.array(blocks[k]) for k in sorted(blocks)]
+    return {k: np.array(v) for k, v in blocks.items()}
 
 
 def theory_profile(t_us, c):
@@ -67,6 +68,8 @@ def main():
 
     pc = read_profiles(glob.glob(os.path.join(a.contact, f"profile.*.{a.dim}d.txt"))[0])
     pn = read_profiles(glob.glob(os.path.join(a.nocontact, f"profile.off.{a.dim}d.txt"))[0])
+    pc = [pc[k] for k in sorted(pc)]
+    pn = [pn[k] for k in sorted(pn)]
     times = [0, 3, 6, 9, 12]
     fig, axes = plt.subplots(len(times), 1, figsize=(8, 11), sharex=True)
     for k, (ax, t) in enumerate(zip(axes, times)):

@@ -88,18 +88,9 @@ def thermo(text):
 
 def profiles(path):
     """blocks of a fix ave/chunk profile file: {timestep: array of (x [mm], v_x)}"""
-    import numpy as np
-    blocks, cur = {}, None
-    for line in open(path):
-        if line.startswith("#"):
-            continue
-        p = line.split()
-        if len(p) == 3:
-            cur = int(p[0])
-            blocks[cur] = []
-        elif len(p) == 4 and float(p[2]) > 0:
-            blocks[cur].append((float(p[1]) * 1e3, float(p[3])))
-    return {k: np.array(v) for k, v in blocks.items()}
+    sys.path.insert(0, os.path.join(ROOT, "tools"))
+    from plot_rod_impact import read_profiles
+    return read_profiles(path)
 
 
 def summary(text, key="ROD_IMPACT"):
