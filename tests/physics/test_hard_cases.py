@@ -81,6 +81,19 @@ c.less("off-axis: energy drift [%]", abs(s["energy_drift_pct"]), 0.5, "REFERENCE
 c.less("off-axis: angular momentum drift (relative)", abs(Lz[-1] - Lz[0]) / abs(Lz[0]), 1e-2,
        "SPH stress forces are not central: approximate, REFERENCES 7")
 
+# 4b. a rod hitting a block face tilted by 30 degrees (coarse 3D, staircase face)
+log = et.run(a, "oblique_rod/in.oblique_rod", {"dx": 0.2}, log="log.orod")
+s = et.summary(log, "OBLIQUE_ROD")
+print(f"INFO oblique rod: {s}")
+c.true("oblique rod: one contact episode", s["episodes"] == 1, "hit and rebound")
+c.less("oblique rod: momentum drift", s["momentum_drift_rel"], 1e-12, "round-off")
+c.less("oblique rod: energy drift [%]", abs(s["energy_drift_pct"]), 0.5, "REFERENCES 7")
+# frictionless physics gives mu_eff = 0; the staircase face of a lattice body gives noisy
+# normals and a lattice friction of 0.05-0.09 (0.069 here, 0.093 at 0.1 mm): reported as
+# a finding, guarded against getting worse
+c.less("oblique rod: lattice friction |J_t|/|J_n| of the staircase face", s["mu_eff"], 0.12,
+       "measured 0.05-0.09; exact 0 (see doc/hard_cases.md)")
+
 # 6. a spinning block (corrected gradient) hitting a block at rest, coarse 3D
 log = et.run(a, "spinning_block/in.spinning_block", {"dx": 0.2}, log="log.spin")
 s = et.summary(log, "SPINNING")
