@@ -2,10 +2,10 @@
 // LAMMPS_PLUGIN_PATH): bad input, objectivity, restart, data files.
 
 #include "atom.h"
+#include "fix.h"
 #include "info.h"
 #include "input.h"
 #include "lammps.h"
-#include "fix.h"
 #include "modify.h"
 #include "update.h"
 
@@ -77,8 +77,9 @@ TEST_F(ESPHTest, BadPairStyle)
                command("pair_style esph/solid 1e-4 bogus 1"););
   TEST_FAILURE(".*ERROR: Unknown pair esph/solid kernel quintic: expected cubic or wendland.*",
                command("pair_style esph/solid 1e-4 kernel quintic"););
-  TEST_FAILURE(".*ERROR: Unknown pair esph/solid contact rule maybe: expected off, solid or paper.*",
-               command("pair_style esph/solid 1e-4 contact maybe"););
+  TEST_FAILURE(
+      ".*ERROR: Unknown pair esph/solid contact rule maybe: expected off, solid or paper.*",
+      command("pair_style esph/solid 1e-4 contact maybe"););
   TEST_FAILURE(".*ERROR: Pair esph/solid visc epsilon must be > 0.*",
                command("pair_style esph/solid 1e-4 visc 1 1 0"););
   TEST_FAILURE(".*ERROR: Pair esph/solid dimension must be 1 .. 3.*got 4.*",
@@ -181,7 +182,7 @@ TEST_F(ESPHTest, ZeroMassWithoutBoundaryRole)
   BEGIN_HIDE_OUTPUT();
   command("fix 1 all esph/integrate");
   command("variable zero atom 0.0");
-  command("set atom 1 mass 1.0");    // valid
+  command("set atom 1 mass 1.0");       // valid
   command("set atom 5 mass v_zero");    // set mass rejects 0, a variable does not
   END_HIDE_OUTPUT();
   TEST_FAILURE(".*ERROR on proc 0: Atom 5 has zero mass but no boundary normal.*",
@@ -250,7 +251,8 @@ TEST_F(ESPHTest, ObjectivityRigidRotation)
   command(fmt::format("set group all d2_esph_s[1] {}", tau));
   command(fmt::format("set group all d2_esph_s[2] {}", -tau));
   command("fix 1 all esph/integrate move no");
-  command(fmt::format("fix 2 all move rotate {} {} {} 0 0 1 {} units box", c, c, c, 2.0 * M_PI / w));
+  command(
+      fmt::format("fix 2 all move rotate {} {} {} 0 0 1 {} units box", c, c, c, 2.0 * M_PI / w));
   command("timestep 1e-8");
   command("region core block 3e-4 7e-4 3e-4 7e-4 3e-4 7e-4 units box");
   command("group core region core");
@@ -286,7 +288,8 @@ TEST_F(ESPHTest, StressFreeRotationStaysStressFree)
   const double c = 0.5 * n * dx;
   BEGIN_HIDE_OUTPUT();
   command("fix 1 all esph/integrate move no");
-  command(fmt::format("fix 2 all move rotate {} {} {} 0 0 1 {} units box", c, c, c, 2.0 * M_PI / w));
+  command(
+      fmt::format("fix 2 all move rotate {} {} {} 0 0 1 {} units box", c, c, c, 2.0 * M_PI / w));
   command("timestep 1e-8");
   command("region core block 3e-4 7e-4 3e-4 7e-4 3e-4 7e-4 units box");
   command("group core region core");
@@ -343,8 +346,8 @@ TEST_F(ESPHTest, RestartInMidContactIsExact)
   for (int i = 0; i < lmp->atom->nlocal; i++)
     ref[lmp->atom->tag[i]] = {lmp->atom->x[i][0], lmp->atom->x[i][1], lmp->atom->x[i][2],
                               lmp->atom->v[i][0], lmp->atom->v[i][1], lmp->atom->v[i][2]};
-  const double tref = lmp->update->atime + (lmp->update->ntimestep - lmp->update->atimestep) *
-      lmp->update->dt;
+  const double tref =
+      lmp->update->atime + (lmp->update->ntimestep - lmp->update->atimestep) * lmp->update->dt;
 
   BEGIN_HIDE_OUTPUT();
   command("clear");
@@ -356,8 +359,8 @@ TEST_F(ESPHTest, RestartInMidContactIsExact)
   command("neighbor 2e-5 bin");
   command("run 60 post no");
   END_HIDE_OUTPUT();
-  const double t2 = lmp->update->atime + (lmp->update->ntimestep - lmp->update->atimestep) *
-      lmp->update->dt;
+  const double t2 =
+      lmp->update->atime + (lmp->update->ntimestep - lmp->update->atimestep) * lmp->update->dt;
   EXPECT_DOUBLE_EQ(t2, tref);
   ASSERT_EQ((size_t) lmp->atom->nlocal, ref.size());
   double maxdx = 0.0, maxdv = 0.0;

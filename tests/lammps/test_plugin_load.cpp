@@ -26,19 +26,26 @@ TEST_F(PluginTest, LoadAndList)
 {
   ASSERT_FALSE(info->has_style("pair", "esph/solid"))
       << "esph/solid is already there: unset LAMMPS_PLUGIN_PATH for this test";
-  auto out = CAPTURE_OUTPUT([&] { command("plugin load " ESPH_PLUGIN_FILE); });
+  auto out = CAPTURE_OUTPUT([&] {
+    command("plugin load " ESPH_PLUGIN_FILE);
+  });
   EXPECT_THAT(out, ContainsRegex(".*Loading plugin: ESPH elastic solid SPH pair style.*"));
   EXPECT_THAT(out, ContainsRegex(".*Loading plugin: ESPH time integration.*"));
   EXPECT_THAT(out, ContainsRegex(".*Loading plugin: ESPH non-mass boundary particles.*"));
   EXPECT_TRUE(info->has_style("pair", "esph/solid"));
   EXPECT_TRUE(info->has_style("fix", "esph/integrate"));
   EXPECT_TRUE(info->has_style("fix", "esph/boundary"));
-  out = CAPTURE_OUTPUT([&] { command("plugin list"); });
+  out = CAPTURE_OUTPUT([&] {
+    command("plugin list");
+  });
   EXPECT_THAT(out, ContainsRegex(".*pair style plugin esph/solid.*"));
   // a second load of the same styles is ignored
-  out = CAPTURE_OUTPUT([&] { command("plugin load " ESPH_PLUGIN_FILE); });
-  EXPECT_THAT(out, ContainsRegex(".*Ignoring load of pair style esph/solid: must unload existing "
-                                 "esph/solid plugin first.*"));
+  out = CAPTURE_OUTPUT([&] {
+    command("plugin load " ESPH_PLUGIN_FILE);
+  });
+  EXPECT_THAT(out,
+              ContainsRegex(".*Ignoring load of pair style esph/solid: must unload existing "
+                            "esph/solid plugin first.*"));
 }
 
 int main(int argc, char **argv)

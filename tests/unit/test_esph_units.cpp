@@ -54,7 +54,8 @@ TEST(Kernel, GradientMatchesFiniteDifference)
         kernel_eval(k, dim, norm, 1.0 / h, r + dr, wp, tmp);
         kernel_eval(k, dim, norm, 1.0 / h, r - dr, wm, tmp);
         const double fd = (wp - wm) / (2.0 * dr);
-        EXPECT_NEAR(dw * r, fd, 1.0e-6 * fabs(norm / h)) << "k=" << k << " dim=" << dim << " q=" << q;
+        EXPECT_NEAR(dw * r, fd, 1.0e-6 * fabs(norm / h))
+            << "k=" << k << " dim=" << dim << " q=" << q;
       }
     }
 }
@@ -177,7 +178,9 @@ TEST(Strength, JaumannRigidRotation)
   double s[6] = {tau, -tau, 0.0, 0.0, 0.0, 0.0};
   const int nsteps = 2000;
   const double T = 0.5 * PI / w, dt = T / nsteps;
-  auto rate = [&](const double *y, double *k) { jaumann_rate(L, y, G, k); };
+  auto rate = [&](const double *y, double *k) {
+    jaumann_rate(L, y, G, k);
+  };
   for (int n = 0; n < nsteps; n++) {
     double k1[6], k2[6], k3[6], k4[6], y[6];
     rate(s, k1);
