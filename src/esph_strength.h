@@ -25,6 +25,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 namespace ESPH {
 
 inline Eigen::Matrix3d voigt_to_matrix(const double *s)
@@ -54,6 +56,21 @@ inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, do
   Eigen::Matrix3d rate = 2.0 * G * D + W * S - S * W;
   rate.diagonal().array() -= 2.0 * G * D.trace() / 3.0;
   matrix_to_voigt(rate, dsdt);
+}
+
+/* perfect plasticity (von Mises, radial return): scale the deviator back onto the yield
+   surface when sigma_eq = sqrt(3/2 S:S) exceeds Y. Y <= 0: elastic. The plastic work needs
+   no extra term: the energy equation already receives the full stress power. */
+
+inline void radial_return(double *s, double Y)
+{
+  if (Y <= 0.0) return;
+  const double s2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
+      2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  const double seq = sqrt(1.5 * s2);
+  if (seq <= Y) return;
+  const double f = Y / seq;
+  for (int k = 0; k < 6; k++) s[k] *= f;
 }
 
 }    // namespace ESPH

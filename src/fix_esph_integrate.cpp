@@ -24,6 +24,7 @@
 #include "comm.h"
 #include "error.h"
 #include "esph_state.h"
+#include "esph_strength.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -183,6 +184,8 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   double **s = state->s, **n = state->n;
   const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
   double **ds = pair->ds, **bspin = pair->bspin;
+  const int *type = atom->type;
+  const double *yield = pair->yield;
 
   for (int i = 0; i < nlocal; i++) {
     double *p = pred[i];
@@ -203,10 +206,12 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         e[i] += dth * de[i];
         h[i] += dth * dh[i];
         for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
+        ESPH::radial_return(s[i], yield[type[i]]);
         p[P_RHO] = rho[i] + dth * drho[i];
         p[P_E] = e[i] + dth * de[i];
         p[P_H] = h[i] + dth * dh[i];
         for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
+        ESPH::radial_return(p + P_S, yield[type[i]]);
         p[P_DIVV] = -drho[i] / rho[i];
         continue;
       }
@@ -255,6 +260,8 @@ void FixESPHIntegrate::final_integrate()
   double **s = state->s;
   const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
   double **ds = pair->ds, **bvel = pair->bvel;
+  const int *type = atom->type;
+  const double *yield = pair->yield;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -269,6 +276,7 @@ void FixESPHIntegrate::final_integrate()
       e[i] += dth * de[i];
       h[i] += dth * dh[i];
       for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
+      ESPH::radial_return(s[i], yield[type[i]]);
     } else if (move) {
       v[i][0] = bvel[i][0];
       v[i][1] = bvel[i][1];

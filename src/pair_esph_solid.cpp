@@ -80,7 +80,7 @@ static constexpr double BIG_DT = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
-    Pair(lmp), eos(nullptr), shear(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr),
+    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr),
     drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr), bspin(nullptr),
     nboundary(0), state(nullptr), fix_int(nullptr)
 {
@@ -144,6 +144,7 @@ PairESPHSolid::~PairESPHSolid()
     memory->destroy(cutsq);
     delete[] eos;
     memory->destroy(shear);
+    memory->destroy(yield);
     memory->destroy(matset);
   }
 }
@@ -160,10 +161,12 @@ void PairESPHSolid::allocate()
     for (int j = 0; j < n; j++) setflag[i][j] = 0;
   eos = new EOS[n];
   memory->create(shear, n, "pair:shear");
+  memory->create(yield, n, "pair:yield");
   memory->create(matset, n, "pair:matset");
   for (int i = 0; i < n; i++) {
     matset[i] = 0;
     shear[i] = 0.0;
+    yield[i] = 0.0;
     eos[i] = EOS{EOS_LINEAR, 0.0, 0.0, 0.0, 0.0, 0.0};
   }
 }
@@ -285,7 +288,7 @@ void PairESPHSolid::coeff(int narg, char **arg)
                "{} {}",
                arg[0], arg[1]);
 
-  double rho0 = -1.0, G = -1.0;
+  double rho0 = -1.0, G = -1.0, Y = 0.0;
   EOS eq{-1, 0.0, 0.0, 0.0, 0.0, 0.0};
   int iarg = 2;
   while (iarg < narg) {
@@ -300,6 +303,13 @@ void PairESPHSolid::coeff(int narg, char **arg)
       G = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (G < 0.0)
         error->all(FLERR, iarg + 1, "Pair esph/solid shear modulus must be >= 0, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "yield") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid yield", error);
+      Y = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (Y < 0.0)
+        error->all(FLERR, iarg + 1, "Pair esph/solid yield stress must be >= 0 (0: elastic), got {}",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "eos") == 0) {
@@ -348,6 +358,7 @@ void PairESPHSolid::coeff(int narg, char **arg)
   for (int i = ilo; i <= ihi; i++) {
     eos[i] = eq;
     shear[i] = G;
+    yield[i] = Y;
     matset[i] = 1;
   }
   // every pair of types with materials interacts

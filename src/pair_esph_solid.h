@@ -68,6 +68,7 @@ class PairESPHSolid : public Pair {
   // per-type material
   ESPH::EOS *eos;
   double *shear;
+  double *yield;    // von Mises yield stress, 0 = elastic (no plasticity)
   int *matset;
 
   // per-atom work arrays

@@ -112,6 +112,8 @@ TEST_F(ESPHTest, BadPairCoeff)
                command("pair_coeff 1 1 rho0 7850 shear 80e9 eos mie/gruneisen -3574 1.92 1.69"););
   TEST_FAILURE(".*ERROR: Unknown pair esph/solid eos tillotson: expected linear or mie/gruneisen.*",
                command("pair_coeff 1 1 rho0 7850 shear 80e9 eos tillotson 1"););
+  TEST_FAILURE(".*ERROR: Pair esph/solid yield stress must be >= 0 \\(0: elastic\\), got -1.*",
+               command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 yield -1"););
   TEST_FAILURE(".*ERROR: Unknown pair_coeff esph/solid keyword: young.*",
                command("pair_coeff 1 1 rho0 7850 young 189.6e9 eos linear 1e11"););
   TEST_FAILURE(".*ERROR: Pair esph/solid materials are per atom type: use pair_coeff I I.*",

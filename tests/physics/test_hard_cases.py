@@ -106,6 +106,32 @@ c.true("spinning block: one contact episode, the blocks separate",
 c.less("spinning block: momentum drift", abs(px[-1] - px[0]) / px[0], 1e-12, "round-off")
 c.less("spinning block: energy drift [%]", abs(s["energy_drift_pct"]), 0.5, "REFERENCES 7")
 
+# 9 (part). elastic-perfectly-plastic iron (von Mises, Y = 0.5 GPa), 1D uniaxial strain,
+# 50 m/s: a two-wave structure. Elastic precursor at c_p with particle velocity
+# u_HEL = c_p Y / (2G) = 16.05 m/s (Hugoniot elastic limit of uniaxial strain), plastic
+# wave at the bulk speed c_b = sqrt(K/rho0) = c0 = 3574 m/s up to V/2 = 25 m/s.
+log = et.run(a, "rod_impact/in.rod_impact", {"dim": 1, "dx": 0.05, "tend": 3, "yield": 0.5e9,
+                                             "contact": "off", "thermo_every": 200},
+             log="log.plastic")
+s = et.summary(log)
+blocks = et.profiles(f"{a.lastdir}/profile.off.1d.txt")
+prof = blocks[max(blocks)]
+x, v = prof[:, 0], prof[:, 1]
+t = 3.0e-6
+uhel = cp("iron") * 0.5e9 / (2 * 80.0e9)
+pre = v[(x > 12.0) & (x < 14.0)].mean()
+xpl = x[x > 0][np.argmax(v[x > 0] < 0.5 * (25.0 + uhel))]
+print(f"INFO plastic: precursor {pre:.3f} m/s (theory {uhel:.3f}), plastic front {xpl:.2f} mm "
+      f"(c0 t = {3574.0 * t * 1e3:.2f}), energy drift {s['energy_drift_pct']} %")
+c.near("plastic: elastic precursor velocity [m/s]", pre, uhel, 0.01 * uhel,
+       "u_HEL = c_p Y/(2G); 1 % for the discretisation")
+c.near("plastic: plastic front at 3 us [mm]", xpl, 3574.0 * t * 1e3, 0.03 * 3574.0 * t * 1e3,
+       "bulk speed c0 t; +1.7 % expected from the Mie-Grueneisen stiffening (K' = 6.7 at eta ~ 0.5 %)")
+c.near("plastic: plateau behind the plastic wave [m/s]", v[(x > 1.0) & (x < 8.0)].mean(), 25.0,
+       0.05, "V/2 by symmetry")
+c.less("plastic: energy drift [%]", abs(s["energy_drift_pct"]), 0.5,
+       "plastic work goes into the internal energy")
+
 # 8. long run: free bar, 1e5 steps (with the default viscosity). Without viscosity the
 # predictor-corrector stress update is weakly unstable at CFL 0.3 (blow-up after ~8000
 # steps; stable at CFL 0.1): documented in doc/hard_cases.md, not asserted here.

@@ -245,3 +245,22 @@ TEST(Contact, NormalGapGate)
   contact_normal(n0, n0, xij, nc);
   EXPECT_NEAR(nc[0], 1.0 / sqrt(1.09), 1e-15);
 }
+
+// radial return: a deviator beyond the von Mises surface is scaled back onto it, one inside
+// is untouched, Y = 0 means elastic
+TEST(Strength, RadialReturn)
+{
+  double s[6] = {2.0e8, -1.0e8, -1.0e8, 0.5e8, 0.0, 0.0};
+  const double seq0 = sqrt(1.5 * (4e16 + 1e16 + 1e16 + 2 * 0.25e16));
+  radial_return(s, 1.0e8);
+  const double seq = sqrt(1.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
+                                 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+  EXPECT_NEAR(seq, 1.0e8, 1e-6);
+  EXPECT_NEAR(s[0] / s[3], 4.0, 1e-12);    // direction kept
+  double t[6] = {1.0e7, -1.0e7, 0.0, 0.0, 0.0, 0.0};
+  radial_return(t, 1.0e8);
+  EXPECT_DOUBLE_EQ(t[0], 1.0e7);
+  radial_return(t, 0.0);
+  EXPECT_DOUBLE_EQ(t[0], 1.0e7);
+  EXPECT_GT(seq0, 1.0e8);
+}
