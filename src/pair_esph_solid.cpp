@@ -80,9 +80,9 @@ static constexpr double BIG_DT = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
-    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr),
-    drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr), bspin(nullptr),
-    nboundary(0), state(nullptr), fix_int(nullptr)
+    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), matset(nullptr), nmax(0), acc(nullptr),
+    hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr),
+    bspin(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -309,8 +309,8 @@ void PairESPHSolid::coeff(int narg, char **arg)
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid yield", error);
       Y = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (Y < 0.0)
-        error->all(FLERR, iarg + 1, "Pair esph/solid yield stress must be >= 0 (0: elastic), got {}",
-                   arg[iarg + 1]);
+        error->all(FLERR, iarg + 1,
+                   "Pair esph/solid yield stress must be >= 0 (0: elastic), got {}", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "eos") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos", error);
@@ -597,6 +597,22 @@ void PairESPHSolid::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
+   sums for the normal (eq. 30) and depth of real particle p from boundary
+   particle k: dx = x_i - x_j and sgn = +1 if k == i, -1 if k == j, so that
+   x_k - x_p = sgn dx
+------------------------------------------------------------------------- */
+
+static inline void add_normal_sums(double *ap, double w, double sgn, const double *dx,
+                                   const double *nk)
+{
+  ap[A_NSUM] += w * nk[0];
+  ap[A_NSUM + 1] += w * nk[1];
+  ap[A_NSUM + 2] += w * nk[2];
+  ap[A_DSUM] += w * (sgn * dx[0] * nk[0] + sgn * dx[1] * nk[1] + sgn * dx[2] * nk[2]);
+  ap[A_WSUM] += w;
+}
+
+/* ----------------------------------------------------------------------
    the pair loop: one pass over the half neighbour list
    real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
    real-real other body: contact rule (section 4.3), normal components only
@@ -700,17 +716,7 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
           }
           ak[B_WSUM] += Vp * w;
         }
-        if (p < nlocal || newton_pair || p == i) {
-          double *ap = acc[p];
-          // x_k - x_p = -sgn * dx ... dx = x_i - x_j; if k == i: x_k - x_p = dx
-          const double dkp[3] = {sgn * dx[0], sgn * dx[1], sgn * dx[2]};
-          const double *nk = qk + Q_N;
-          ap[A_NSUM] += w * nk[0];
-          ap[A_NSUM + 1] += w * nk[1];
-          ap[A_NSUM + 2] += w * nk[2];
-          ap[A_DSUM] += w * (dkp[0] * nk[0] + dkp[1] * nk[1] + dkp[2] * nk[2]);
-          ap[A_WSUM] += w;
-        }
+        if (p < nlocal || newton_pair || p == i) { add_normal_sums(acc[p], w, sgn, dx, qk + Q_N); }
         continue;
       }
 
@@ -938,21 +944,7 @@ void PairESPHSolid::finalize(int eflag)
       jaumann_rate(L, sp, shear[type[i]], ds[i]);
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
-      if (bnd) {
-        const double n2 =
-            a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
-        if (n2 > 0.0 && a[A_WSUM] > 0.0) {
-          // eq. (30), the length kept as the coherence |sum n_k W| / sum W <= 1
-          const double inv = 1.0 / a[A_WSUM];
-          state->n[i][0] = a[A_NSUM] * inv;
-          state->n[i][1] = a[A_NSUM + 1] * inv;
-          state->n[i][2] = a[A_NSUM + 2] * inv;
-          state->depth[i] = a[A_DSUM] * inv;
-        } else {
-          state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
-          state->depth[i] = 0.0;
-        }
-      }
+      if (bnd) store_normal(i);
       if (eflag) {
         const double ei = rmass[i] * q[Q_E];
         esum += ei;
@@ -1006,6 +998,26 @@ void PairESPHSolid::finalize(int eflag)
 }
 
 /* ----------------------------------------------------------------------
+   normal and depth of real particle i from its sums; the length of the
+   normal is kept as the coherence |sum n_k W| / sum W <= 1
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::store_normal(int i)
+{
+  const double *a = acc[i];
+  const double n2 =
+      a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
+  if (n2 > 0.0 && a[A_WSUM] > 0.0) {
+    const double inv = 1.0 / a[A_WSUM];
+    for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
+    state->depth[i] = a[A_DSUM] * inv;
+  } else {
+    state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
+    state->depth[i] = 0.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
    normals (eq. 30) and depths of real particles from the boundary particles
    of their own body; used at the start of a run, later they come with the
    regular pair loop
@@ -1051,13 +1063,7 @@ void PairESPHSolid::compute_normals()
       const int k = (p == i) ? j : i;
       if (p >= nlocal && !newton_pair && p != i) continue;
       const double sgn = (k == i) ? 1.0 : -1.0;
-      const double *nk = hq[k] + Q_N;
-      double *ap = acc[p];
-      ap[A_NSUM] += w * nk[0];
-      ap[A_NSUM + 1] += w * nk[1];
-      ap[A_NSUM + 2] += w * nk[2];
-      ap[A_DSUM] += w * sgn * (dx[0] * nk[0] + dx[1] * nk[1] + dx[2] * nk[2]);
-      ap[A_WSUM] += w;
+      add_normal_sums(acc[p], w, sgn, dx, hq[k] + Q_N);
     }
   }
   if (newton_pair) {
@@ -1066,17 +1072,7 @@ void PairESPHSolid::compute_normals()
   }
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) continue;
-    const double *a = acc[i];
-    const double n2 =
-        a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
-    if (n2 > 0.0 && a[A_WSUM] > 0.0) {
-      const double inv = 1.0 / a[A_WSUM];
-      for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
-      state->depth[i] = a[A_DSUM] * inv;
-    } else {
-      state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
-      state->depth[i] = 0.0;
-    }
+    store_normal(i);
   }
   normals_valid = 1;
 }

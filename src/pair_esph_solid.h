@@ -97,6 +97,7 @@ class PairESPHSolid : public Pair {
   void hoist();
   void finalize(int eflag);
   void compute_normals();
+  void store_normal(int);
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop();
 };
