@@ -37,6 +37,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <cmath>
 #include <cstring>
@@ -82,7 +83,7 @@ static constexpr double BIG_DT = 1.0e300;
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), matset(nullptr), nmax(0), acc(nullptr),
     hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr),
-    bspin(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
+    bspin(nullptr), rart(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -123,6 +124,10 @@ void PairESPHSolid::set_defaults()
   contact = CONTACT_SOLID;
   gaptol = 1.0e-3;
   correct_flag = 0;
+  astress_flag = 0;
+  astress_eps = 0.0;
+  astress_n = 4;
+  astress_dp = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -139,6 +144,7 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(ds);
   memory->destroy(bvel);
   memory->destroy(bspin);
+  memory->destroy(rart);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -255,6 +261,23 @@ void PairESPHSolid::settings(int narg, char **arg)
                    "Unknown pair esph/solid gradient {}: expected plain or corrected",
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "artstress") == 0) {
+      if (iarg + 3 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid artstress", error);
+      astress_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      astress_n = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
+      astress_dp = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      if (astress_eps < 0.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid artstress epsilon must be >= 0, got {}",
+                   arg[iarg + 1]);
+      if (astress_n < 1)
+        error->all(FLERR, iarg + 3, "Pair esph/solid artstress exponent n must be >= 1, got {}",
+                   arg[iarg + 2]);
+      if (astress_dp <= 0.0)
+        error->all(FLERR, iarg + 4, "Pair esph/solid artstress spacing dp must be > 0, got {}",
+                   arg[iarg + 3]);
+      astress_flag = (astress_eps > 0.0);
+      iarg += 4;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
       gaptol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -265,6 +288,11 @@ void PairESPHSolid::settings(int narg, char **arg)
       error->all(FLERR, iarg + 1, "Unknown pair_style esph/solid keyword: {}", arg[iarg]);
     }
   }
+  if (astress_flag && astress_dp >= KERNEL_SUPPORT * h0)
+    error->all(FLERR,
+               "Pair esph/solid artstress spacing dp = {} must be below the kernel support "
+               "{} x h = {}",
+               astress_dp, KERNEL_SUPPORT, KERNEL_SUPPORT * h0);
   cut_global = KERNEL_SUPPORT * h0 * hmax;
 }
 
@@ -480,6 +508,7 @@ void PairESPHSolid::grow_work()
   memory->grow(ds, nmax, 6, "pair:ds");
   memory->grow(bvel, nmax, 3, "pair:bvel");
   memory->grow(bspin, nmax, 3, "pair:bspin");
+  if (astress_flag || rart) memory->grow(rart, nmax, 6, "pair:rart");
   for (int i = old; i < nmax; i++) {
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
@@ -584,6 +613,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
   nreverse = (bnd || correct_flag) ? NACC : 11;
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
+  if (astress_flag) artificial_stress();
+
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
   run_pair_loop(bnd);
@@ -594,6 +625,45 @@ void PairESPHSolid::compute(int eflag, int vflag)
   }
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   Monaghan (2000) / Gray, Monaghan and Swift (2001) artificial stress of
+   every owned and ghost real particle from its sigma / rho^2 (already
+   communicated): in the principal frame R'_aa = -epsilon sigma'_aa / rho^2
+   where sigma'_aa > 0 (tension), 0 otherwise; R = V R' V^T
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::artificial_stress()
+{
+  if (!rart) memory->create(rart, nmax, 6, "pair:rart");
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    const double *A = hq[i] + Q_A;
+    double *R = rart[i];
+    for (int k = 0; k < 6; k++) R[k] = 0.0;
+    // compression in every direction (the common case in impact): nothing to do;
+    // the largest eigenvalue is at most the largest Gershgorin bound
+    const double g0 = A[0] + fabs(A[3]) + fabs(A[4]);
+    const double g1 = A[1] + fabs(A[3]) + fabs(A[5]);
+    const double g2 = A[2] + fabs(A[4]) + fabs(A[5]);
+    if (g0 <= 0.0 && g1 <= 0.0 && g2 <= 0.0) continue;
+    Eigen::Matrix3d M;
+    M << A[0], A[3], A[4], A[3], A[1], A[5], A[4], A[5], A[2];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+    es.computeDirect(M);
+    const Eigen::Vector3d lam = es.eigenvalues();
+    const Eigen::Matrix3d &V = es.eigenvectors();
+    Eigen::Matrix3d Rm = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < 3; a++)
+      if (lam(a) > 0.0) Rm -= astress_eps * lam(a) * V.col(a) * V.col(a).transpose();
+    R[0] = Rm(0, 0);
+    R[1] = Rm(1, 1);
+    R[2] = Rm(2, 2);
+    R[3] = Rm(0, 1);
+    R[4] = Rm(0, 2);
+    R[5] = Rm(1, 2);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -620,7 +690,7 @@ static inline void add_normal_sums(double *ap, double w, double sgn, const doubl
      the real particle's normal sums (eq. 30)
 ------------------------------------------------------------------------- */
 
-template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
+template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pair_loop()
 {
   double **x = atom->x;
   double **f = atom->f;
@@ -635,6 +705,13 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
   const double norm0 = kernel_norm(kernel, dim, h0);
   const double hinv0 = 1.0 / h0;
   const double gap_tol = gaptol * h0;
+  // artificial stress: 1 / W(dp) at constant h
+  double wdp_inv0 = 0.0;
+  if (AST) {
+    double wdp, dwdp;
+    kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
+    wdp_inv0 = 1.0 / wdp;
+  }
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -750,6 +827,32 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
         pi_ij = (-alpha * 0.5 * (qi[Q_C] + qj[Q_C]) * mu + beta * mu * mu) /
             (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
       }
+      // heating by the artificial viscosity and stress, half to each particle
+      double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
+      if (AST && !cross) {
+        // Monaghan (2000) artificial stress f_ij^n (R_i + R_j): a repulsion between
+        // particles in tension, R = -epsilon sigma'/rho^2 in the principal frame
+        double wdp_inv = wdp_inv0;
+        if (HVAR) {
+          double wdp, dwdp;
+          kernel_eval(kernel, dim, norm, hinv, astress_dp, wdp, dwdp);
+          wdp_inv = 1.0 / wdp;
+        }
+        const double fij = w * wdp_inv;
+        double fn = fij;
+        for (int k = 1; k < astress_n; k++) fn *= fij;
+        const double *Ri = rart[i];
+        const double *Rj = rart[j];
+        const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
+                             fn * (Ri[3] + Rj[3]), fn * (Ri[4] + Rj[4]), fn * (Ri[5] + Rj[5])};
+        const double Rg[3] = {R[0] * g[0] + R[3] * g[1] + R[4] * g[2],
+                              R[3] * g[0] + R[1] * g[1] + R[5] * g[2],
+                              R[4] * g[0] + R[5] * g[1] + R[2] * g[2]};
+        Tg[0] += Rg[0];
+        Tg[1] += Rg[1];
+        Tg[2] += Rg[2];
+        avh -= 0.5 * (vij[0] * Rg[0] + vij[1] * Rg[1] + vij[2] * Rg[2]);
+      }
       const double mm = mi * mj;
       double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
                       mm * (Tg[2] - pi_ij * g[2])};
@@ -776,8 +879,6 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
       fzi += ff[2];
 
       // G = sum_j m_j (v_j - v_i) (x) grad_i W, for i and j alike
-      const double vg = vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2];
-      const double avh = 0.5 * pi_ij * vg;
       for (int a = 0; a < 3; a++) {
         const double wa = -mj * vij[a];
         gi[3 * a] += wa * g[0];
@@ -843,58 +944,66 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop()
    dispatch: optional physics switched off is compiled out of the pair loop
 ------------------------------------------------------------------------- */
 
+template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_ast()
+{
+  if (astress_flag)
+    pair_loop<BND, HVAR, HEAT, CORR, 1>();
+  else
+    pair_loop<BND, HVAR, HEAT, CORR, 0>();
+}
+
 void PairESPHSolid::run_pair_loop(int bnd)
 {
   const int key =
       (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
   switch (key) {
     case 0:
-      pair_loop<0, 0, 0, 0>();
+      pair_loop_ast<0, 0, 0, 0>();
       break;
     case 1:
-      pair_loop<0, 0, 0, 1>();
+      pair_loop_ast<0, 0, 0, 1>();
       break;
     case 2:
-      pair_loop<0, 0, 1, 0>();
+      pair_loop_ast<0, 0, 1, 0>();
       break;
     case 3:
-      pair_loop<0, 0, 1, 1>();
+      pair_loop_ast<0, 0, 1, 1>();
       break;
     case 4:
-      pair_loop<0, 1, 0, 0>();
+      pair_loop_ast<0, 1, 0, 0>();
       break;
     case 5:
-      pair_loop<0, 1, 0, 1>();
+      pair_loop_ast<0, 1, 0, 1>();
       break;
     case 6:
-      pair_loop<0, 1, 1, 0>();
+      pair_loop_ast<0, 1, 1, 0>();
       break;
     case 7:
-      pair_loop<0, 1, 1, 1>();
+      pair_loop_ast<0, 1, 1, 1>();
       break;
     case 8:
-      pair_loop<1, 0, 0, 0>();
+      pair_loop_ast<1, 0, 0, 0>();
       break;
     case 9:
-      pair_loop<1, 0, 0, 1>();
+      pair_loop_ast<1, 0, 0, 1>();
       break;
     case 10:
-      pair_loop<1, 0, 1, 0>();
+      pair_loop_ast<1, 0, 1, 0>();
       break;
     case 11:
-      pair_loop<1, 0, 1, 1>();
+      pair_loop_ast<1, 0, 1, 1>();
       break;
     case 12:
-      pair_loop<1, 1, 0, 0>();
+      pair_loop_ast<1, 1, 0, 0>();
       break;
     case 13:
-      pair_loop<1, 1, 0, 1>();
+      pair_loop_ast<1, 1, 0, 1>();
       break;
     case 14:
-      pair_loop<1, 1, 1, 0>();
+      pair_loop_ast<1, 1, 1, 0>();
       break;
     default:
-      pair_loop<1, 1, 1, 1>();
+      pair_loop_ast<1, 1, 1, 1>();
       break;
   }
 }
@@ -1167,6 +1276,7 @@ double PairESPHSolid::memory_usage()
 {
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (NACC + NHQ + 3 + 6 + 3 + 3) * sizeof(double);
+  if (rart) bytes += (double) nmax * 6 * sizeof(double);
   return bytes;
 }
 

@@ -59,11 +59,15 @@ class PairESPHSolid : public Pair {
   double alpha, beta, eps;    // Monaghan-Gingold viscosity
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
-  int hvar_flag;       // variable smoothing length (eq. 24)
-  double hmax;         // allowed growth of h (cutoff factor)
-  int contact;         // ESPH::ContactRule
-  double gaptol;       // contact gap tolerance (fraction of h0)
-  int correct_flag;    // kernel-gradient corrected velocity gradient
+  int hvar_flag;         // variable smoothing length (eq. 24)
+  double hmax;           // allowed growth of h (cutoff factor)
+  int contact;           // ESPH::ContactRule
+  double gaptol;         // contact gap tolerance (fraction of h0)
+  int correct_flag;      // kernel-gradient corrected velocity gradient
+  int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
+  double astress_eps;    // its strength epsilon
+  int astress_n;         // its exponent n in f_ij^n, f_ij = W(r_ij) / W(dp)
+  double astress_dp;     // the initial particle spacing dp
 
   // per-type material
   ESPH::EOS *eos;
@@ -77,6 +81,7 @@ class PairESPHSolid : public Pair {
   double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
   double *drho, *de, *dh, **ds;    // rates for the integrator
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
+  double **rart;                   // artificial stress R / rho^2 (Voigt), owned and ghost atoms
   int comm_stage;
   int nforward, nreverse;
 
@@ -98,8 +103,10 @@ class PairESPHSolid : public Pair {
   void finalize(int eflag);
   void compute_normals();
   void store_normal(int);
+  void artificial_stress();
   void run_pair_loop(int);
-  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop();
+  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_ast();
+  template <int BND, int HVAR, int HEAT, int CORR, int AST> void pair_loop();
 };
 
 }    // namespace LAMMPS_NS
