@@ -43,9 +43,23 @@ void ESPHState::ensure(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::ensure_plastic(LAMMPS *lmp)
+{
+  if (lmp->modify->get_fix_by_id(FIX_ID_PLASTIC)) return;
+  int flag, cols;
+  if (lmp->atom->find_custom("esph_epsp", flag, cols) >= 0)
+    lmp->error->all(FLERR, Error::NOLASTLINE,
+                    "ESPH per-atom property esph_epsp exists but fix {} does not: it must not be "
+                    "defined by hand",
+                    FIX_ID_PLASTIC);
+  lmp->modify->add_fix(std::string(FIX_ID_PLASTIC) + " all property/atom d_esph_epsp");
+}
+
+/* ---------------------------------------------------------------------- */
+
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
-    body(nullptr), lmp(_lmp)
+    body(nullptr), epsp(nullptr), lmp(_lmp), iepsp(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -75,4 +89,8 @@ void ESPHState::fetch()
   n = atom->darray[in];
   depth = atom->dvector[idepth];
   body = atom->ivector[ibody];
+  // optional: looked up each time (created when plasticity is defined)
+  int flag, cols;
+  iepsp = atom->find_custom("esph_epsp", flag, cols);
+  epsp = (iepsp >= 0) ? atom->dvector[iepsp] : nullptr;
 }

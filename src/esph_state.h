@@ -37,20 +37,25 @@ class ESPHState {
   static constexpr const char *FIX_ID = "ESPH_STATE";
   static constexpr const char *FIX_ID_STRESS = "ESPH_STRESS";
   static constexpr const char *FIX_ID_NORMAL = "ESPH_NORMAL";
+  static constexpr const char *FIX_ID_PLASTIC = "ESPH_PLASTIC";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
+  // create the plastic-strain fix (d_esph_epsp) if it does not exist yet: only scenes
+  // with plasticity carry it
+  static void ensure_plastic(LAMMPS *lmp);
 
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
   void fetch();
 
   double *rmass, *rho, *e, *h, **s, **n, *depth;
+  double *epsp;    // equivalent plastic strain, nullptr without plasticity
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody;
+  int irho, ie, ih, is, in, idepth, ibody, iepsp;
 };
 
 }    // namespace LAMMPS_NS

@@ -58,19 +58,25 @@ inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, do
   matrix_to_voigt(rate, dsdt);
 }
 
-/* perfect plasticity (von Mises, radial return): scale the deviator back onto the yield
-   surface when sigma_eq = sqrt(3/2 S:S) exceeds Y. Y <= 0: elastic. The plastic work needs
-   no extra term: the energy equation already receives the full stress power. */
+/* von Mises plasticity with linear isotropic hardening, radial return: when the trial
+   sigma_eq = sqrt(3/2 S:S) exceeds Y = Y0 + H epsp, the plastic strain grows by
+   depsp = (sigma_eq - Y) / (3 G + H) and the deviator is scaled back onto the grown
+   yield surface Y + H depsp. H = 0: perfect plasticity. Y0 <= 0: elastic. Returns depsp
+   (0 when G = H = 0). The plastic work needs no extra term: the energy equation already
+   receives the full stress power. */
 
-inline void radial_return(double *s, double Y)
+inline double radial_return(double *s, double Y0, double H = 0.0, double G = 0.0, double epsp = 0.0)
 {
-  if (Y <= 0.0) return;
-  const double s2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
-      2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  if (Y0 <= 0.0) return 0.0;
+  const double s2 =
+      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
   const double seq = sqrt(1.5 * s2);
-  if (seq <= Y) return;
-  const double f = Y / seq;
+  const double Y = Y0 + H * epsp;
+  if (seq <= Y) return 0.0;
+  const double depsp = (3.0 * G + H > 0.0) ? (seq - Y) / (3.0 * G + H) : 0.0;
+  const double f = (Y + H * depsp) / seq;
   for (int k = 0; k < 6; k++) s[k] *= f;
+  return depsp;
 }
 
 }    // namespace ESPH

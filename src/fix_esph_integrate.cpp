@@ -134,6 +134,13 @@ void FixESPHIntegrate::init()
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/integrate requires pair style esph/solid");
   if (modify->get_fix_by_style("^esph/integrate$").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
+  state->fetch();
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (pair->yield[t] > 0.0 && !state->epsp)
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Fix esph/integrate: atom type {} is plastic but the plastic-strain fix {} is "
+                 "gone (it must not be deleted)",
+                 t, ESPHState::FIX_ID_PLASTIC);
   reset_dt();
 }
 
@@ -185,7 +192,8 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
   double **ds = pair->ds, **bspin = pair->bspin;
   const int *type = atom->type;
-  const double *yield = pair->yield;
+  const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
+  double *epsp = state->epsp;
 
   for (int i = 0; i < nlocal; i++) {
     double *p = pred[i];
@@ -206,12 +214,15 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         e[i] += dth * de[i];
         h[i] += dth * dh[i];
         for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
-        ESPH::radial_return(s[i], yield[type[i]]);
+        const int t = type[i];
+        if (yield[t] > 0.0)
+          epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
         p[P_RHO] = rho[i] + dth * drho[i];
         p[P_E] = e[i] + dth * de[i];
         p[P_H] = h[i] + dth * dh[i];
         for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
-        ESPH::radial_return(p + P_S, yield[type[i]]);
+        // the prediction does not commit plastic strain
+        if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
         p[P_DIVV] = -drho[i] / rho[i];
         continue;
       }
@@ -261,7 +272,8 @@ void FixESPHIntegrate::final_integrate()
   const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
   double **ds = pair->ds, **bvel = pair->bvel;
   const int *type = atom->type;
-  const double *yield = pair->yield;
+  const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
+  double *epsp = state->epsp;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -276,7 +288,9 @@ void FixESPHIntegrate::final_integrate()
       e[i] += dth * de[i];
       h[i] += dth * dh[i];
       for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
-      ESPH::radial_return(s[i], yield[type[i]]);
+      const int t = type[i];
+      if (yield[t] > 0.0)
+        epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
     } else if (move) {
       v[i][0] = bvel[i][0];
       v[i][1] = bvel[i][1];

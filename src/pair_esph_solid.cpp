@@ -81,9 +81,9 @@ static constexpr double BIG_DT = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
-    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), matset(nullptr), nmax(0), acc(nullptr),
-    hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr), bvel(nullptr),
-    bspin(nullptr), rart(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
+    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), matset(nullptr),
+    nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr),
+    bvel(nullptr), bspin(nullptr), rart(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -151,6 +151,7 @@ PairESPHSolid::~PairESPHSolid()
     delete[] eos;
     memory->destroy(shear);
     memory->destroy(yield);
+    memory->destroy(hardening);
     memory->destroy(matset);
   }
 }
@@ -168,11 +169,13 @@ void PairESPHSolid::allocate()
   eos = new EOS[n];
   memory->create(shear, n, "pair:shear");
   memory->create(yield, n, "pair:yield");
+  memory->create(hardening, n, "pair:hardening");
   memory->create(matset, n, "pair:matset");
   for (int i = 0; i < n; i++) {
     matset[i] = 0;
     shear[i] = 0.0;
     yield[i] = 0.0;
+    hardening[i] = 0.0;
     eos[i] = EOS{EOS_LINEAR, 0.0, 0.0, 0.0, 0.0, 0.0};
   }
 }
@@ -316,7 +319,7 @@ void PairESPHSolid::coeff(int narg, char **arg)
                "{} {}",
                arg[0], arg[1]);
 
-  double rho0 = -1.0, G = -1.0, Y = 0.0;
+  double rho0 = -1.0, G = -1.0, Y = 0.0, H = 0.0;
   EOS eq{-1, 0.0, 0.0, 0.0, 0.0, 0.0};
   int iarg = 2;
   while (iarg < narg) {
@@ -339,6 +342,14 @@ void PairESPHSolid::coeff(int narg, char **arg)
       if (Y < 0.0)
         error->all(FLERR, iarg + 1,
                    "Pair esph/solid yield stress must be >= 0 (0: elastic), got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "hardening") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_coeff esph/solid hardening", error);
+      H = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (H < 0.0)
+        error->all(FLERR, iarg + 1, "Pair esph/solid hardening modulus must be >= 0, got {}",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "eos") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos", error);
@@ -381,12 +392,17 @@ void PairESPHSolid::coeff(int narg, char **arg)
   if (rho0 < 0.0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the rho0 keyword");
   if (G < 0.0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the shear keyword");
   if (eq.type < 0) error->all(FLERR, "Pair esph/solid pair_coeff is missing the eos keyword");
+  if (H > 0.0 && Y <= 0.0)
+    error->all(FLERR, "Pair esph/solid hardening {} needs a yield stress > 0 (keyword yield)", H);
   eq.rho0 = rho0;
+  // plasticity carries the equivalent plastic strain per atom
+  if (Y > 0.0) ESPHState::ensure_plastic(lmp);
 
   for (int i = ilo; i <= ihi; i++) {
     eos[i] = eq;
     shear[i] = G;
     yield[i] = Y;
+    hardening[i] = H;
     matset[i] = 1;
   }
   // every pair of types with materials interacts
@@ -864,7 +880,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
         const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
         if (gap <= gap_tol && count_pair) ntouch_pairs++;
         if (!contact_gate(contact, gap, gap_tol, vn, xn, fn)) continue;
-        if (contact == CONTACT_SOLID && fn > 0.0) fn = 0.0;    // no tension across contact
+        // no tension across contact: a touching pair that would pull does not interact at
+        // all (also not in the strain rate and energy, which would otherwise see work that
+        // no force does)
+        if (contact == CONTACT_SOLID && fn > 0.0) continue;
         ff[0] = fn * nc[0];
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];

@@ -72,7 +72,8 @@ class PairESPHSolid : public Pair {
   // per-type material
   ESPH::EOS *eos;
   double *shear;
-  double *yield;    // von Mises yield stress, 0 = elastic (no plasticity)
+  double *yield;        // von Mises yield stress, 0 = elastic (no plasticity)
+  double *hardening;    // linear isotropic hardening modulus (d yield / d plastic strain)
   int *matset;
 
   // per-atom work arrays

@@ -253,8 +253,9 @@ TEST(Strength, RadialReturn)
   double s[6] = {2.0e8, -1.0e8, -1.0e8, 0.5e8, 0.0, 0.0};
   const double seq0 = sqrt(1.5 * (4e16 + 1e16 + 1e16 + 2 * 0.25e16));
   radial_return(s, 1.0e8);
-  const double seq = sqrt(1.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
-                                 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+  const double seq = sqrt(
+      1.5 *
+      (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
   EXPECT_NEAR(seq, 1.0e8, 1e-6);
   EXPECT_NEAR(s[0] / s[3], 4.0, 1e-12);    // direction kept
   double t[6] = {1.0e7, -1.0e7, 0.0, 0.0, 0.0, 0.0};
@@ -263,4 +264,26 @@ TEST(Strength, RadialReturn)
   radial_return(t, 0.0);
   EXPECT_DOUBLE_EQ(t[0], 1.0e7);
   EXPECT_GT(seq0, 1.0e8);
+}
+
+// radial return with linear hardening: the plastic strain increment solves
+// sigma_trial - 3 G depsp = Y0 + H (epsp + depsp), and the returned deviator lies on the
+// grown surface; a second call with the updated epsp leaves it there (consistency)
+TEST(Strength, RadialReturnHardening)
+{
+  const double G = 40.0e9, H = 1.0e9, Y0 = 4.0e8, epsp0 = 0.01;
+  double s[6] = {6.0e8, -3.0e8, -3.0e8, 0.0, 0.0, 0.0};
+  const double trial = sqrt(1.5 * (36e16 + 9e16 + 9e16));    // 9e8
+  const double dep = radial_return(s, Y0, H, G, epsp0);
+  EXPECT_NEAR(dep, (trial - (Y0 + H * epsp0)) / (3.0 * G + H), 1e-18);
+  const double seq = sqrt(1.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]));
+  EXPECT_NEAR(seq, Y0 + H * (epsp0 + dep), 1e-4);
+  EXPECT_NEAR(seq, trial - 3.0 * G * dep, 1e-4);
+  EXPECT_NEAR(radial_return(s, Y0, H, G, epsp0 + dep), 0.0, 1e-15);
+  // perfect plasticity: the same scaling as without G and H
+  double a[6] = {6.0e8, -3.0e8, -3.0e8, 1.0e8, 0.0, 0.0}, b[6];
+  for (int k = 0; k < 6; k++) b[k] = a[k];
+  radial_return(a, Y0);
+  radial_return(b, Y0, 0.0, G, 0.5);
+  for (int k = 0; k < 6; k++) EXPECT_DOUBLE_EQ(a[k], b[k]);
 }
