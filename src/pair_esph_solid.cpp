@@ -664,8 +664,7 @@ void PairESPHSolid::artificial_stress()
     const double g1 = A[1] + fabs(A[3]) + fabs(A[5]);
     const double g2 = A[2] + fabs(A[4]) + fabs(A[5]);
     if (g0 <= 0.0 && g1 <= 0.0 && g2 <= 0.0) continue;
-    Eigen::Matrix3d M;
-    M << A[0], A[3], A[4], A[3], A[1], A[5], A[4], A[5], A[2];
+    const Eigen::Matrix3d M = voigt_to_matrix(A);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
     es.computeDirect(M);
     const Eigen::Vector3d lam = es.eigenvalues();
@@ -673,12 +672,7 @@ void PairESPHSolid::artificial_stress()
     Eigen::Matrix3d Rm = Eigen::Matrix3d::Zero();
     for (int a = 0; a < 3; a++)
       if (lam(a) > 0.0) Rm -= astress_eps * lam(a) * V.col(a) * V.col(a).transpose();
-    R[0] = Rm(0, 0);
-    R[1] = Rm(1, 1);
-    R[2] = Rm(2, 2);
-    R[3] = Rm(0, 1);
-    R[4] = Rm(0, 2);
-    R[5] = Rm(1, 2);
+    matrix_to_voigt(Rm, R);
   }
 }
 
