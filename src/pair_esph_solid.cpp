@@ -73,6 +73,9 @@ static constexpr int Q_N = 12;    // 12..14 normal
 static constexpr int Q_DEPTH = 15;
 static constexpr int Q_E = 16;
 static constexpr int Q_ZETA = 17;
+// with the artificial stress only (not communicated: computed for ghosts from Q_A)
+static constexpr int Q_R = 18;        // 18..23 artificial stress R / rho^2 (Voigt)
+static constexpr int Q_RFLAG = 24;    // 1 if R != 0
 
 enum { COMM_HOIST, COMM_ACC, COMM_NORMALS };
 
@@ -83,7 +86,7 @@ static constexpr double BIG_DT = 1.0e300;
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), matset(nullptr),
     nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr),
-    bvel(nullptr), bspin(nullptr), rart(nullptr), nboundary(0), state(nullptr), fix_int(nullptr)
+    bvel(nullptr), bspin(nullptr), hq_cols(NHQ), nboundary(0), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -144,7 +147,6 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(ds);
   memory->destroy(bvel);
   memory->destroy(bspin);
-  memory->destroy(rart);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -513,18 +515,24 @@ void PairESPHSolid::setup()
 
 void PairESPHSolid::grow_work()
 {
+  // the artificial stress keeps R next to the other hoisted quantities (memory locality)
+  const int cols = NHQ + (astress_flag ? NHQ_AST : 0);
+  if (cols != hq_cols) {
+    memory->destroy(hq);
+    hq_cols = cols;
+    if (nmax > 0) memory->create(hq, nmax, hq_cols, "pair:hq");
+  }
   if (atom->nmax <= nmax) return;
   const int old = nmax;
   nmax = atom->nmax;
   memory->grow(acc, nmax, NACC, "pair:acc");
-  memory->grow(hq, nmax, NHQ, "pair:hq");
+  memory->grow(hq, nmax, hq_cols, "pair:hq");
   memory->grow(drho, nmax, "pair:drho");
   memory->grow(de, nmax, "pair:de");
   memory->grow(dh, nmax, "pair:dh");
   memory->grow(ds, nmax, 6, "pair:ds");
   memory->grow(bvel, nmax, 3, "pair:bvel");
   memory->grow(bspin, nmax, 3, "pair:bspin");
-  if (astress_flag || rart) memory->grow(rart, nmax, 6, "pair:rart");
   for (int i = old; i < nmax; i++) {
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
@@ -652,12 +660,11 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
 void PairESPHSolid::artificial_stress()
 {
-  if (!rart) memory->create(rart, nmax, 6, "pair:rart");
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
     const double *A = hq[i] + Q_A;
-    double *R = rart[i];
-    for (int k = 0; k < 6; k++) R[k] = 0.0;
+    double *R = hq[i] + Q_R;
+    for (int k = 0; k < NHQ_AST; k++) R[k] = 0.0;
     // compression in every direction (the common case in impact): nothing to do;
     // the largest eigenvalue is at most the largest Gershgorin bound
     const double g0 = A[0] + fabs(A[3]) + fabs(A[4]);
@@ -673,6 +680,7 @@ void PairESPHSolid::artificial_stress()
     for (int a = 0; a < 3; a++)
       if (lam(a) > 0.0) Rm -= astress_eps * lam(a) * V.col(a) * V.col(a).transpose();
     matrix_to_voigt(Rm, R);
+    R[6] = 1.0;    // flag: some principal stress is tensile
   }
 }
 
@@ -839,7 +847,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
       }
       // heating by the artificial viscosity and stress, half to each particle
       double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
-      if (AST && !cross) {
+      if (AST && !cross && (qi[Q_RFLAG] + qj[Q_RFLAG] > 0.0)) {
         // Monaghan (2000) artificial stress f_ij^n (R_i + R_j): a repulsion between
         // particles in tension, R = -epsilon sigma'/rho^2 in the principal frame
         double wdp_inv = wdp_inv0;
@@ -851,8 +859,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
         const double fij = w * wdp_inv;
         double fn = fij;
         for (int k = 1; k < astress_n; k++) fn *= fij;
-        const double *Ri = rart[i];
-        const double *Rj = rart[j];
+        const double *Ri = qi + Q_R;
+        const double *Rj = qj + Q_R;
         const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
                              fn * (Ri[3] + Rj[3]), fn * (Ri[4] + Rj[4]), fn * (Ri[5] + Rj[5])};
         const double Rg[3] = {R[0] * g[0] + R[3] * g[1] + R[4] * g[2],
@@ -1288,8 +1296,7 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
 double PairESPHSolid::memory_usage()
 {
   double bytes = Pair::memory_usage();
-  bytes += (double) nmax * (NACC + NHQ + 3 + 6 + 3 + 3) * sizeof(double);
-  if (rart) bytes += (double) nmax * 6 * sizeof(double);
+  bytes += (double) nmax * (NACC + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   return bytes;
 }
 

@@ -49,6 +49,8 @@ class PairESPHSolid : public Pair {
   static constexpr int NACC = 28;
   // hoisted per-particle quantities sent to ghosts every step
   static constexpr int NHQ = 18;
+  // more hoisted quantities per atom with the artificial stress (R and its flag)
+  static constexpr int NHQ_AST = 7;
 
  protected:
   // global settings
@@ -82,7 +84,7 @@ class PairESPHSolid : public Pair {
   double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
   double *drho, *de, *dh, **ds;    // rates for the integrator
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
-  double **rart;                   // artificial stress R / rho^2 (Voigt), owned and ghost atoms
+  int hq_cols;                     // columns of hq: NHQ, + NHQ_AST with the artificial stress
   int comm_stage;
   int nforward, nreverse;
 
