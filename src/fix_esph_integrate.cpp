@@ -194,6 +194,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const int *type = atom->type;
   const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
   double *epsp = state->epsp;
+  double **xs = pair->xsph_flag ? pair->xsph : nullptr;
 
   for (int i = 0; i < nlocal; i++) {
     double *p = pred[i];
@@ -206,6 +207,9 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
             x[i][d] += dtv * v[i][d];
             p[P_V + d] = v[i][d] + dtfm * f[i][d];
           }
+          // XSPH: the particle drifts with its velocity smoothed over its body
+          if (xs)
+            for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
         } else {
           for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
         }

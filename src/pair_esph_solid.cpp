@@ -55,6 +55,11 @@ static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
 static constexpr int A_WSUM = 15;     // sum_k W_ik
 static constexpr int A_M =
     16;    // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
+static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i) W_ij (xsph)
+
+// optional pair terms, bits of the last template parameter of pair_loop()
+static constexpr int EXTRA_ASTRESS = 1;
+static constexpr int EXTRA_XSPH = 2;
 // boundary particles
 static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
 static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
@@ -86,7 +91,8 @@ static constexpr double BIG_DT = 1.0e300;
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), matset(nullptr),
     nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr),
-    bvel(nullptr), bspin(nullptr), hq_cols(NHQ), nboundary(0), state(nullptr), fix_int(nullptr)
+    bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0), state(nullptr),
+    fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -131,6 +137,8 @@ void PairESPHSolid::set_defaults()
   astress_eps = 0.0;
   astress_n = 4;
   astress_dp = 0.0;
+  xsph_flag = 0;
+  xsph_eps = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -147,6 +155,7 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(ds);
   memory->destroy(bvel);
   memory->destroy(bspin);
+  memory->destroy(xsph);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -283,6 +292,14 @@ void PairESPHSolid::settings(int narg, char **arg)
                    arg[iarg + 3]);
       astress_flag = (astress_eps > 0.0);
       iarg += 4;
+    } else if (strcmp(arg[iarg], "xsph") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid xsph", error);
+      xsph_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (xsph_eps < 0.0 || xsph_eps > 1.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid xsph epsilon must be in [0, 1], got {}",
+                   arg[iarg + 1]);
+      xsph_flag = (xsph_eps > 0.0);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
       gaptol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -522,6 +539,10 @@ void PairESPHSolid::grow_work()
     hq_cols = cols;
     if (nmax > 0) memory->create(hq, nmax, hq_cols, "pair:hq");
   }
+  if (xsph_flag && !xsph && nmax > 0) {
+    memory->create(xsph, nmax, 3, "pair:xsph");
+    for (int i = 0; i < nmax; i++) xsph[i][0] = xsph[i][1] = xsph[i][2] = 0.0;
+  }
   if (atom->nmax <= nmax) return;
   const int old = nmax;
   nmax = atom->nmax;
@@ -533,10 +554,12 @@ void PairESPHSolid::grow_work()
   memory->grow(ds, nmax, 6, "pair:ds");
   memory->grow(bvel, nmax, 3, "pair:bvel");
   memory->grow(bspin, nmax, 3, "pair:bspin");
+  if (xsph_flag || xsph) memory->grow(xsph, nmax, 3, "pair:xsph");
   for (int i = old; i < nmax; i++) {
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
     for (int k = 0; k < 3; k++) bvel[i][k] = bspin[i][k] = 0.0;
+    if (xsph) xsph[i][0] = xsph[i][1] = xsph[i][2] = 0.0;
   }
 }
 
@@ -634,7 +657,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   comm->forward_comm(this, nforward);
 
   // without boundary particles or gradient correction only G and the heating terms
-  nreverse = (bnd || correct_flag) ? NACC : 11;
+  nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
   if (astress_flag) artificial_stress();
@@ -708,7 +731,7 @@ static inline void add_normal_sums(double *ap, double w, double sgn, const doubl
      the real particle's normal sums (eq. 30)
 ------------------------------------------------------------------------- */
 
-template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pair_loop()
+template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::pair_loop()
 {
   double **x = atom->x;
   double **f = atom->f;
@@ -725,6 +748,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
   const double gap_tol = gaptol * h0;
   // artificial stress: 1 / W(dp) at constant h
   double wdp_inv0 = 0.0;
+  constexpr int AST = EXTRA & EXTRA_ASTRESS;
+  constexpr int XSPH = EXTRA & EXTRA_XSPH;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -747,6 +772,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
     double gi[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double avhi = 0.0, heati = 0.0;
+    double xsi[3] = {0.0, 0.0, 0.0};
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
 
@@ -925,8 +951,20 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
         heati += mj * heat;
       }
 
+      // XSPH (Monaghan 1989): particles move with the velocity smoothed over their
+      // own body, xsph_i = sum_j m_j / rhobar_ij (v_j - v_i) W_ij
+      double wx = 0.0;
+      if (XSPH && !cross) {
+        wx = w / (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
+        xsi[0] -= mj * wx * vij[0];
+        xsi[1] -= mj * wx * vij[1];
+        xsi[2] -= mj * wx * vij[2];
+      }
+
       if (jown) {
         double *aj = acc[j];
+        if (XSPH && !cross)
+          for (int a = 0; a < 3; a++) aj[A_XSPH + a] += mi * wx * vij[a];
         f[j][0] -= ff[0];
         f[j][1] -= ff[1];
         f[j][2] -= ff[2];
@@ -955,6 +993,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
       for (int k = 0; k < 9; k++) ai[A_G + k] += gi[k];
       ai[A_AVHEAT] += avhi;
       if (HEAT) ai[A_HEAT] += heati;
+      if (XSPH)
+        for (int a = 0; a < 3; a++) ai[A_XSPH + a] += xsi[a];
       if (CORR)
         for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
     }
@@ -967,10 +1007,20 @@ template <int BND, int HVAR, int HEAT, int CORR, int AST> void PairESPHSolid::pa
 
 template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_ast()
 {
-  if (astress_flag)
-    pair_loop<BND, HVAR, HEAT, CORR, 1>();
-  else
-    pair_loop<BND, HVAR, HEAT, CORR, 0>();
+  switch ((astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0)) {
+    case 0:
+      pair_loop<BND, HVAR, HEAT, CORR, 0>();
+      break;
+    case EXTRA_ASTRESS:
+      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_ASTRESS>();
+      break;
+    case EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_XSPH>();
+      break;
+    default:
+      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_ASTRESS | EXTRA_XSPH>();
+      break;
+  }
 }
 
 void PairESPHSolid::run_pair_loop(int bnd)
@@ -1072,6 +1122,8 @@ void PairESPHSolid::finalize(int eflag)
       }
       if (!corrected) L /= rho;
       jaumann_rate(L, sp, shear[type[i]], ds[i]);
+      if (xsph_flag)
+        for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
       if (bnd) store_normal(i);
@@ -1297,6 +1349,7 @@ double PairESPHSolid::memory_usage()
 {
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (NACC + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
+  if (xsph) bytes += (double) nmax * 3 * sizeof(double);
   return bytes;
 }
 

@@ -70,6 +70,8 @@ class PairESPHSolid : public Pair {
   double astress_eps;    // its strength epsilon
   int astress_n;         // its exponent n in f_ij^n, f_ij = W(r_ij) / W(dp)
   double astress_dp;     // the initial particle spacing dp
+  int xsph_flag;         // XSPH: particles move with the velocity smoothed over their body
+  double xsph_eps;       // its strength
 
   // per-type material
   ESPH::EOS *eos;
@@ -84,6 +86,7 @@ class PairESPHSolid : public Pair {
   double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
   double *drho, *de, *dh, **ds;    // rates for the integrator
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
+  double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
   int hq_cols;                     // columns of hq: NHQ, + NHQ_AST with the artificial stress
   int comm_stage;
   int nforward, nreverse;
@@ -109,7 +112,7 @@ class PairESPHSolid : public Pair {
   void artificial_stress();
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_ast();
-  template <int BND, int HVAR, int HEAT, int CORR, int AST> void pair_loop();
+  template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
 };
 
 }    // namespace LAMMPS_NS

@@ -101,6 +101,8 @@ TEST_F(ESPHTest, BadPairStyle)
   TEST_FAILURE(".*ERROR: Pair esph/solid artstress spacing dp = 0.0003 must be below the kernel "
                "support 2 x h = 0.0002.*",
                command("pair_style esph/solid 1e-4 artstress 0.3 4 3e-4"););
+  TEST_FAILURE(".*ERROR: Pair esph/solid xsph epsilon must be in \\[0, 1\\], got 1.5.*",
+               command("pair_style esph/solid 1e-4 xsph 1.5"););
 }
 
 TEST_F(ESPHTest, BadPairCoeff)
@@ -129,10 +131,12 @@ TEST_F(ESPHTest, BadPairCoeff)
                command("pair_coeff 1 1 rho0 7850 shear 80e9 eos tillotson 1"););
   TEST_FAILURE(".*ERROR: Pair esph/solid yield stress must be >= 0 \\(0: elastic\\), got -1.*",
                command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 yield -1"););
-  TEST_FAILURE(".*ERROR: Pair esph/solid hardening modulus must be >= 0, got -1.*",
-               command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 yield 1e8 hardening -1"););
-  TEST_FAILURE(".*ERROR: Pair esph/solid hardening .* needs a yield stress > 0 \\(keyword yield\\).*",
-               command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 hardening 1e8"););
+  TEST_FAILURE(
+      ".*ERROR: Pair esph/solid hardening modulus must be >= 0, got -1.*",
+      command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 yield 1e8 hardening -1"););
+  TEST_FAILURE(
+      ".*ERROR: Pair esph/solid hardening .* needs a yield stress > 0 \\(keyword yield\\).*",
+      command("pair_coeff 1 1 rho0 7850 shear 80e9 eos linear 1e11 hardening 1e8"););
   TEST_FAILURE(".*ERROR: Unknown pair_coeff esph/solid keyword: young.*",
                command("pair_coeff 1 1 rho0 7850 young 189.6e9 eos linear 1e11"););
   TEST_FAILURE(".*ERROR: Pair esph/solid materials are per atom type: use pair_coeff I I.*",
@@ -360,7 +364,9 @@ neighbor 2e-5 bin
 // state must agree bitwise (positions, velocities and, with plasticity, plastic strain)
 static void restart_check(LAMMPS *lmp, const std::string &pstyle, const std::string &pcoeff)
 {
-  auto command = [lmp](const std::string &line) { lmp->input->one(line); };
+  auto command = [lmp](const std::string &line) {
+    lmp->input->one(line);
+  };
   for (const auto &line : utils::split_lines(setup_impact(50.0, pstyle, pcoeff))) command(line);
   command("run 60 post no");
   command("write_restart test_esph.restart");
@@ -373,8 +379,12 @@ static void restart_check(LAMMPS *lmp, const std::string &pstyle, const std::str
   std::map<tagint, std::vector<double>> ref;
   double epmax = 0.0;
   for (int i = 0; i < lmp->atom->nlocal; i++) {
-    ref[lmp->atom->tag[i]] = {lmp->atom->x[i][0], lmp->atom->x[i][1], lmp->atom->x[i][2],
-                              lmp->atom->v[i][0], lmp->atom->v[i][1], lmp->atom->v[i][2],
+    ref[lmp->atom->tag[i]] = {lmp->atom->x[i][0],
+                              lmp->atom->x[i][1],
+                              lmp->atom->x[i][2],
+                              lmp->atom->v[i][0],
+                              lmp->atom->v[i][1],
+                              lmp->atom->v[i][2],
                               epsp(i)};
     epmax = std::max(epmax, epsp(i));
   }
@@ -419,11 +429,11 @@ TEST_F(ESPHTest, RestartInMidContactIsExact)
 }
 
 // the same with hardening plasticity (plastic strain in ESPH_PLASTIC) and the artificial
-// stress switched on
+// stress and XSPH switched on
 TEST_F(ESPHTest, RestartPlasticIsExact)
 {
   BEGIN_HIDE_OUTPUT();
-  restart_check(lmp, "artstress 0.3 4 1e-4", "yield 2e8 hardening 1e9");
+  restart_check(lmp, "artstress 0.3 4 1e-4 xsph 0.5", "yield 2e8 hardening 1e9");
   END_HIDE_OUTPUT();
 }
 

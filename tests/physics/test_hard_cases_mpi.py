@@ -24,6 +24,8 @@ cases = [
      {"dx": 0.25, "tend": 2, "thermo_every": 20}),
     ("colliding rings", "colliding_rings/in.colliding_rings",
      {"dx": 1.0, "tend": 40, "thermo_every": 50}),
+    ("colliding rings, xsph", "colliding_rings/in.colliding_rings",
+     {"dx": 1.0, "tend": 40, "thermo_every": 50, "eps": 0.3, "xsph": 0.5}),
     ("spinning block", "spinning_block/in.spinning_block",
      {"dx": 0.2, "tend": 3, "thermo_every": 20}),
     ("initial gap", "rod_impact/in.rod_impact",
