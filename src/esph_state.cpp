@@ -21,17 +21,28 @@
 
 using namespace LAMMPS_NS;
 
+/* ----------------------------------------------------------------------
+   true if internal fix fixid exists; error if its per-atom property name
+   exists without it (defined by hand)
+------------------------------------------------------------------------- */
+
+static bool internal_fix_exists(LAMMPS *lmp, const char *fixid, const char *name)
+{
+  if (lmp->modify->get_fix_by_id(fixid)) return true;
+  int flag, cols;
+  if (lmp->atom->find_custom(name, flag, cols) >= 0)
+    lmp->error->all(FLERR, Error::NOLASTLINE,
+                    "ESPH per-atom property {} exists but fix {} does not: it must not be "
+                    "defined by hand",
+                    name, fixid);
+  return false;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void ESPHState::ensure(LAMMPS *lmp)
 {
-  if (lmp->modify->get_fix_by_id(FIX_ID)) return;
-  int flag, cols;
-  if (lmp->atom->find_custom("esph_rho", flag, cols) >= 0)
-    lmp->error->all(FLERR, Error::NOLASTLINE,
-                    "ESPH per-atom property esph_rho exists but fix {} does not: it must not be "
-                    "defined by hand",
-                    FIX_ID);
+  if (internal_fix_exists(lmp, FIX_ID, "esph_rho")) return;
   // three fixes, so that each data-file line stays below read_data's 256 characters
   std::string cmd = std::string(FIX_ID) + " all property/atom";
   if (!lmp->atom->rmass_flag) cmd += " rmass";
@@ -45,13 +56,7 @@ void ESPHState::ensure(LAMMPS *lmp)
 
 void ESPHState::ensure_plastic(LAMMPS *lmp)
 {
-  if (lmp->modify->get_fix_by_id(FIX_ID_PLASTIC)) return;
-  int flag, cols;
-  if (lmp->atom->find_custom("esph_epsp", flag, cols) >= 0)
-    lmp->error->all(FLERR, Error::NOLASTLINE,
-                    "ESPH per-atom property esph_epsp exists but fix {} does not: it must not be "
-                    "defined by hand",
-                    FIX_ID_PLASTIC);
+  if (internal_fix_exists(lmp, FIX_ID_PLASTIC, "esph_epsp")) return;
   lmp->modify->add_fix(std::string(FIX_ID_PLASTIC) + " all property/atom d_esph_epsp");
 }
 

@@ -31,6 +31,7 @@
 #include "fix_esph_integrate.h"
 #include "force.h"
 #include "info.h"
+#include "math_special.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -539,10 +540,8 @@ void PairESPHSolid::grow_work()
     hq_cols = cols;
     if (nmax > 0) memory->create(hq, nmax, hq_cols, "pair:hq");
   }
-  if (xsph_flag && !xsph && nmax > 0) {
-    memory->create(xsph, nmax, 3, "pair:xsph");
-    for (int i = 0; i < nmax; i++) xsph[i][0] = xsph[i][1] = xsph[i][2] = 0.0;
-  }
+  // set by every force computation before the integrator reads it: no initial values
+  if (xsph_flag && !xsph && nmax > 0) memory->create(xsph, nmax, 3, "pair:xsph");
   if (atom->nmax <= nmax) return;
   const int old = nmax;
   nmax = atom->nmax;
@@ -559,7 +558,6 @@ void PairESPHSolid::grow_work()
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
     for (int k = 0; k < 3; k++) bvel[i][k] = bspin[i][k] = 0.0;
-    if (xsph) xsph[i][0] = xsph[i][1] = xsph[i][2] = 0.0;
   }
 }
 
@@ -703,7 +701,7 @@ void PairESPHSolid::artificial_stress()
     for (int a = 0; a < 3; a++)
       if (lam(a) > 0.0) Rm -= astress_eps * lam(a) * V.col(a) * V.col(a).transpose();
     matrix_to_voigt(Rm, R);
-    R[6] = 1.0;    // flag: some principal stress is tensile
+    hq[i][Q_RFLAG] = 1.0;    // some principal stress is tensile
   }
 }
 
@@ -882,9 +880,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           kernel_eval(kernel, dim, norm, hinv, astress_dp, wdp, dwdp);
           wdp_inv = 1.0 / wdp;
         }
-        const double fij = w * wdp_inv;
-        double fn = fij;
-        for (int k = 1; k < astress_n; k++) fn *= fij;
+        const double fn = MathSpecial::powint(w * wdp_inv, astress_n);
         const double *Ri = qi + Q_R;
         const double *Rj = qj + Q_R;
         const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
@@ -1005,7 +1001,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
    dispatch: optional physics switched off is compiled out of the pair loop
 ------------------------------------------------------------------------- */
 
-template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_ast()
+template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
 {
   switch ((astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0)) {
     case 0:
@@ -1029,52 +1025,52 @@ void PairESPHSolid::run_pair_loop(int bnd)
       (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
   switch (key) {
     case 0:
-      pair_loop_ast<0, 0, 0, 0>();
+      pair_loop_extra<0, 0, 0, 0>();
       break;
     case 1:
-      pair_loop_ast<0, 0, 0, 1>();
+      pair_loop_extra<0, 0, 0, 1>();
       break;
     case 2:
-      pair_loop_ast<0, 0, 1, 0>();
+      pair_loop_extra<0, 0, 1, 0>();
       break;
     case 3:
-      pair_loop_ast<0, 0, 1, 1>();
+      pair_loop_extra<0, 0, 1, 1>();
       break;
     case 4:
-      pair_loop_ast<0, 1, 0, 0>();
+      pair_loop_extra<0, 1, 0, 0>();
       break;
     case 5:
-      pair_loop_ast<0, 1, 0, 1>();
+      pair_loop_extra<0, 1, 0, 1>();
       break;
     case 6:
-      pair_loop_ast<0, 1, 1, 0>();
+      pair_loop_extra<0, 1, 1, 0>();
       break;
     case 7:
-      pair_loop_ast<0, 1, 1, 1>();
+      pair_loop_extra<0, 1, 1, 1>();
       break;
     case 8:
-      pair_loop_ast<1, 0, 0, 0>();
+      pair_loop_extra<1, 0, 0, 0>();
       break;
     case 9:
-      pair_loop_ast<1, 0, 0, 1>();
+      pair_loop_extra<1, 0, 0, 1>();
       break;
     case 10:
-      pair_loop_ast<1, 0, 1, 0>();
+      pair_loop_extra<1, 0, 1, 0>();
       break;
     case 11:
-      pair_loop_ast<1, 0, 1, 1>();
+      pair_loop_extra<1, 0, 1, 1>();
       break;
     case 12:
-      pair_loop_ast<1, 1, 0, 0>();
+      pair_loop_extra<1, 1, 0, 0>();
       break;
     case 13:
-      pair_loop_ast<1, 1, 0, 1>();
+      pair_loop_extra<1, 1, 0, 1>();
       break;
     case 14:
-      pair_loop_ast<1, 1, 1, 0>();
+      pair_loop_extra<1, 1, 1, 0>();
       break;
     default:
-      pair_loop_ast<1, 1, 1, 1>();
+      pair_loop_extra<1, 1, 1, 1>();
       break;
   }
 }

@@ -111,7 +111,7 @@ class PairESPHSolid : public Pair {
   void store_normal(int);
   void artificial_stress();
   void run_pair_loop(int);
-  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_ast();
+  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
   template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
 };
 
