@@ -14,18 +14,29 @@
 // Contact rule between two real particles of different bodies (seed paper 4.3).
 // Pure math, no LAMMPS dependency: unit-tested alone.
 //
-// Inputs: surface normals n_i, n_j (unit outward normals of each particle's own body,
-// eq. 30, or zero when unknown), depths d_i, d_j of the particles below their body's
-// surface, separation xij = x_i - x_j, relative velocity vij = v_i - v_j, and the pair
-// force on i, fij, that full SPH coupling would apply.
+// The surface gap. Each body's surface is carried by its boundary particles (positions
+// x_k, unit outward normals n_k). Two boundary particles a, b of different bodies face
+// each other along nbar = (n_a - n_b) / |n_a - n_b| (only when their normals differ by
+// more than 60 degrees, |n_a - n_b| > 1: side by side surfaces do not face); their gap
+// is g_ab = (x_b - x_a).nbar, the same seen from a and from b. Each boundary particle
+// keeps the gap to the partner that lies most nearly on that line, max |g_ab| / r_ab
+// (ties: the smaller gap), with its rate (v_b - v_a).nbar: on two flat faces of any
+// orientation that is their distance exactly; a convex edge or corner, whose boundary
+// particles sit on the lattice cell of their particle, reads larger, never smaller.
+// A real particle takes the kernel-weighted mean over the boundary particles of its own
+// body (one force computation later, extrapolated with the rate to the time it is used);
+// a pair of real particles of different bodies touches when either particle's gap is
+// closed: gap_ij = min(g_i, g_j). The contact_gap_pair() result is GAP_NONE where neither
+// particle has another body's surface within its kernel.
 //
 // Common normal: nc ~ w_i n_i - w_j n_j (coherence-weighted, see contact_normal), pointing
 // from i into the other body.
 // Rules:
 //   PAPER : interact iff the particles approach along nc, (vij.nc)(xij.nc) < 0 (eq. 31).
-//   SOLID : (default) interact iff the surfaces touch, gap = -xij.nc - d_i - d_j <= tol,
-//           and either the particles approach along nc or the normal force is compressive
-//           (pushes i away from j); the transmitted normal force is clipped to compression.
+//   SOLID : (default) the cross-body coupling is weighted by contact_weight(gap, band): 0
+//           while the gap is open, rising smoothly (C1) to 1 over the first band of overlap;
+//           a pair whose normal force would pull does not interact (no tension across
+//           contact).
 // Either way only normal components couple: the force is projected on nc and the relative
 // velocity entering the strain rate is (vij.nc) nc.
 
@@ -65,22 +76,65 @@ inline void contact_normal(const double *ni, const double *nj, const double *xij
   nc[2] = a2 * inv;
 }
 
-/* surface gap between the particles' body surfaces along nc (negative: overlap) */
+// no other body's surface in reach
+static constexpr double GAP_NONE = 1.0e30;
 
-inline double contact_gap(const double *xij, const double *nc, double di, double dj)
+/* candidate gap between boundary particles a and b of different bodies: xab = x_b - x_a,
+   vab = v_b - v_a. Returns false when they do not face each other; else the gap g, its
+   rate gdot and the alignment score c = 1 + |g| / r (1 + 1 for coincident particles),
+   larger is better; 0 means no candidate */
+
+inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,
+                            const double *vab, double &c, double &g, double &gdot)
 {
-  return -(xij[0] * nc[0] + xij[1] * nc[1] + xij[2] * nc[2]) - di - dj;
+  const double m[3] = {na[0] - nb[0], na[1] - nb[1], na[2] - nb[2]};
+  const double m2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+  if (m2 <= 1.0) return false;
+  const double inv = 1.0 / sqrt(m2);
+  g = (xab[0] * m[0] + xab[1] * m[1] + xab[2] * m[2]) * inv;
+  gdot = (vab[0] * m[0] + vab[1] * m[1] + vab[2] * m[2]) * inv;
+  const double r2 = xab[0] * xab[0] + xab[1] * xab[1] + xab[2] * xab[2];
+  c = (r2 > 0.0) ? 1.0 + fabs(g) / sqrt(r2) : 2.0;
+  return true;
 }
 
-/* gate: true when the pair interacts. vn = vij.nc, xn = xij.nc (< 0 normally),
-   fn = fij.nc (< 0: compressive, pushes i away from j) */
+/* keep the better of two candidates (c, g, gdot): larger c, then smaller g, then
+   smaller gdot. A total order, so the result does not depend on the order in which the
+   pairs are visited: the same on any number of MPI ranks, and mirror-symmetric scenes
+   stay symmetric */
 
-inline bool contact_gate(int rule, double gap, double gaptol, double vn, double xn, double fn)
+inline void contact_bnd_keep(double *best, double c, double g, double gdot)
 {
-  const bool approach = vn * xn < 0.0;
-  if (rule == CONTACT_PAPER) return approach;
-  if (gap > gaptol) return false;
-  return approach || fn < 0.0;
+  if (c > best[0] || (c == best[0] && (g < best[1] || (g == best[1] && gdot < best[2])))) {
+    best[0] = c;
+    best[1] = g;
+    best[2] = gdot;
+  }
+}
+
+/* gap of a pair of real particles of different bodies from their own gaps */
+
+inline double contact_gap_pair(double gi, double gj)
+{
+  return gi < gj ? gi : gj;
+}
+
+/* weight of the cross-body coupling: 0 while the gap is open (gap >= 0), rising C1
+   smoothly to 1 over the first band of overlap (gap <= -band) */
+
+inline double contact_weight(double gap, double band)
+{
+  if (gap >= 0.0) return 0.0;
+  if (gap <= -band) return 1.0;
+  const double t = -gap / band;
+  return t * t * (3.0 - 2.0 * t);
+}
+
+/* paper rule: true when the particles approach along nc. vn = vij.nc, xn = xij.nc */
+
+inline bool contact_approach(double vn, double xn)
+{
+  return vn * xn < 0.0;
 }
 
 }    // namespace ESPH

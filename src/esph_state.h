@@ -22,6 +22,10 @@
 //   i_esph_body    body ID (particles of different bodies meet through the contact rule)
 //   d2_esph_n[3]   unit outward surface normal (boundary particles: carried; real: eq. 30)
 //   d_esph_depth   depth of a real particle below its body's surface (from boundary particles)
+//   d_esph_gap     surface gap to another body (see esph_contact.h): at a boundary particle
+//                  from the facing boundary particle of the other body, at a real particle the
+//                  mean over its own body's boundary particles; GAP_NONE = no other body near
+//   d_esph_gapv    its rate of change
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -49,13 +53,13 @@ class ESPHState {
   explicit ESPHState(LAMMPS *lmp);
   void fetch();
 
-  double *rmass, *rho, *e, *h, **s, **n, *depth;
+  double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv;
   double *epsp;    // equivalent plastic strain, nullptr without plasticity
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, iepsp;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, iepsp;
 };
 
 }    // namespace LAMMPS_NS

@@ -47,6 +47,10 @@ enum { GENERATE, GIVEN };
 // a particle is on the surface when its kernel-weighted neighbour centroid is off
 // by more than this fraction of the spacing (first layer of a cubic lattice: 0.18)
 static constexpr double SURFACE_OFFSET = 0.05;
+// neighbours closer than this many spacings shape a particle's cell (boundary particle
+// placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
+// diagonals of simple cubic
+static constexpr double NEAR_SHELL = 1.5;
 
 /* ---------------------------------------------------------------------- */
 
@@ -190,9 +194,25 @@ double FixESPHBoundary::compute_scalar()
    A real particle is on the surface when the kernel-weighted centroid of its
    same-body neighbours (support 2 x spacing) is off-centre; its outward
    normal is minus that offset. One boundary particle is placed per surface
-   particle at half a spacing outside it (on a face, an edge or a corner of
-   a lattice body). All group particles are gathered on every rank once.
+   particle, half a spacing outside it along its normal: on a flat face of
+   any orientation that is the face itself; edges and corners are rounded
+   with radius half a spacing. Everything depends on the particles and the
+   spacing only, never on the box axes.
+   Distributed: each rank works on its own particles and receives from the
+   other ranks only those within the search reach of its own (a halo),
+   so memory per rank is O(N/P). The neighbour sums run over an integer
+   cell grid anchored at the box origin, cell by cell in a fixed order and
+   within a cell in the order of atom IDs, so that the boundary particles are
+   the same, bit for bit, on any number of ranks.
 ------------------------------------------------------------------------- */
+
+namespace {
+struct Pt {
+  double x[3];
+  tagint tag;
+  int body;
+};
+}    // namespace
 
 void FixESPHBoundary::generate()
 {
@@ -220,95 +240,145 @@ void FixESPHBoundary::generate()
     return;
   }
 
-  // gather x and body of all real group particles
-  std::vector<double> mine;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
-    mine.push_back(atom->x[i][0]);
-    mine.push_back(atom->x[i][1]);
-    mine.push_back(atom->x[i][2]);
-    mine.push_back((double) state->body[i]);
-  }
-  int nmine = mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
-  const int nall = total / 4;
-  if (nall == 0) error->all(FLERR, "Fix esph/boundary group {} has no real particles", id);
-
-  // periodic images near the box faces
-  const double cut = ESPH::KERNEL_SUPPORT * spacing;
-  const double cutimg = ESPH::KERNEL_SUPPORT * smooth * spacing;
-  std::vector<double> pts;
-  pts.reserve(all.size());
+  const int dim = domain->dimension;
+  const double cut = ESPH::KERNEL_SUPPORT * spacing;           // detection support
+  const double hn = smooth * spacing;                          // normal kernel h
+  const double reach_len = ESPH::KERNEL_SUPPORT * hn;          // >= cut (smooth >= 1)
   const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
   const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
-  for (int k = 0; k < nall; k++) {
-    const double *p = &all[4 * k];
+
+  // own real particles of the group, with their periodic images near the box faces
+  std::vector<Pt> pts;
+  bigint nreal = 0;
+  double blo[3] = {1.0e300, 1.0e300, 1.0e300}, bhi[3] = {-1.0e300, -1.0e300, -1.0e300};
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
+    nreal++;
+    const double *p = atom->x[i];
     int sh[3][3], ns[3];
     for (int d = 0; d < 3; d++) {
       ns[d] = 0;
       sh[d][ns[d]++] = 0;
-      if (per[d] && p[d] < lo[d] + cutimg) sh[d][ns[d]++] = 1;
-      if (per[d] && p[d] > hi[d] - cutimg) sh[d][ns[d]++] = -1;
+      if (per[d] && p[d] < lo[d] + reach_len) sh[d][ns[d]++] = 1;
+      if (per[d] && p[d] > hi[d] - reach_len) sh[d][ns[d]++] = -1;
     }
     for (int a = 0; a < ns[0]; a++)
       for (int b = 0; b < ns[1]; b++)
         for (int c = 0; c < ns[2]; c++) {
-          pts.push_back(p[0] + sh[0][a] * prd[0]);
-          pts.push_back(p[1] + sh[1][b] * prd[1]);
-          pts.push_back(p[2] + sh[2][c] * prd[2]);
-          pts.push_back(p[3]);
+          Pt q;
+          q.x[0] = p[0] + sh[0][a] * prd[0];
+          q.x[1] = p[1] + sh[1][b] * prd[1];
+          q.x[2] = p[2] + sh[2][c] * prd[2];
+          q.tag = atom->tag[i];
+          q.body = state->body[i];
+          pts.push_back(q);
         }
+    for (int d = 0; d < 3; d++) {
+      blo[d] = MIN(blo[d], p[d]);
+      bhi[d] = MAX(bhi[d], p[d]);
+    }
   }
-  const int npts = pts.size() / 4;
+  bigint nreal_all;
+  MPI_Allreduce(&nreal, &nreal_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nreal_all == 0)
+    error->all(FLERR, "Fix esph/boundary group {} has no real particles", group->names[igroup]);
 
-  // hash grid with cell size = support radius
-  auto cellkey = [cut](double x, double y, double z) {
-    const long long ix = (long long) floor(x / cut) + (1 << 20);
-    const long long iy = (long long) floor(y / cut) + (1 << 20);
-    const long long iz = (long long) floor(z / cut) + (1 << 20);
-    return (ix << 42) | (iy << 21) | iz;
+  // halo: every rank receives the points within the search reach of its own particles
+  const int nprocs = comm->nprocs;
+  if (nprocs > 1) {
+    std::vector<double> box(6 * nprocs);
+    double mine[6] = {blo[0] - reach_len, blo[1] - reach_len, blo[2] - reach_len,
+                      bhi[0] + reach_len, bhi[1] + reach_len, bhi[2] + reach_len};
+    MPI_Allgather(mine, 6, MPI_DOUBLE, box.data(), 6, MPI_DOUBLE, world);
+    std::vector<std::vector<double>> out(nprocs);
+    for (const auto &q : pts)
+      for (int p = 0; p < nprocs; p++) {
+        if (p == comm->me) continue;
+        const double *b = &box[6 * p];
+        if (q.x[0] < b[0] || q.x[0] > b[3] || q.x[1] < b[1] || q.x[1] > b[4] || q.x[2] < b[2] ||
+            q.x[2] > b[5])
+          continue;
+        out[p].insert(out[p].end(),
+                      {q.x[0], q.x[1], q.x[2], (double) q.tag, (double) q.body});
+      }
+    std::vector<int> scount(nprocs), rcount(nprocs), sdispl(nprocs), rdispl(nprocs);
+    for (int p = 0; p < nprocs; p++) scount[p] = out[p].size();
+    MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, world);
+    int stot = 0, rtot = 0;
+    for (int p = 0; p < nprocs; p++) {
+      sdispl[p] = stot;
+      rdispl[p] = rtot;
+      stot += scount[p];
+      rtot += rcount[p];
+    }
+    std::vector<double> sbuf(stot), rbuf(rtot);
+    for (int p = 0; p < nprocs; p++) std::copy(out[p].begin(), out[p].end(), &sbuf[sdispl[p]]);
+    MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(),
+                  rcount.data(), rdispl.data(), MPI_DOUBLE, world);
+    for (int k = 0; k < rtot; k += 5) {
+      Pt q;
+      q.x[0] = rbuf[k];
+      q.x[1] = rbuf[k + 1];
+      q.x[2] = rbuf[k + 2];
+      q.tag = (tagint) rbuf[k + 3];
+      q.body = (int) rbuf[k + 4];
+      pts.push_back(q);
+    }
+  }
+
+  // integer cell grid (cell = detection support), anchored at the box origin; each cell
+  // holds its points in the order of atom IDs (images of one atom by position)
+  auto cell_of = [&](const double *x, long long *c) {
+    for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / cut) + (1 << 20);
   };
+  auto key_of = [](const long long *c) { return (c[0] << 42) | (c[1] << 21) | c[2]; };
+  std::vector<int> order(pts.size());
+  for (size_t k = 0; k < pts.size(); k++) order[k] = k;
+  std::sort(order.begin(), order.end(), [&pts](int a, int b) {
+    const Pt &p = pts[a], &q = pts[b];
+    if (p.tag != q.tag) return p.tag < q.tag;
+    for (int d = 0; d < 3; d++)
+      if (p.x[d] != q.x[d]) return p.x[d] < q.x[d];
+    return false;
+  });
   std::unordered_map<long long, std::vector<int>> grid;
-  for (int k = 0; k < npts; k++)
-    grid[cellkey(pts[4 * k], pts[4 * k + 1], pts[4 * k + 2])].push_back(k);
+  for (int k : order) {
+    long long c[3];
+    cell_of(pts[k].x, c);
+    grid[key_of(c)].push_back(k);
+  }
 
-  const int dim = domain->dimension;
   // detection with h = spacing (support 2 spacings: only the outer layer is off-centre);
   // the normal direction from a kernel with h = smooth spacings: 1 (default) is exact on
   // the faces, edges and corners of lattice blocks, a wider kernel averages the staircase
   // of a lattice approximating a curved surface
-  const double hn = smooth * spacing;
   const double norm = ESPH::kernel_norm(ESPH::CUBIC, 3, spacing);
   const double normn = ESPH::kernel_norm(ESPH::CUBIC, 3, hn);
   const double hinv = 1.0 / spacing;
-  const int reach = (int) ceil(ESPH::KERNEL_SUPPORT * hn / cut);
+  const int reach = (int) ceil(reach_len / cut);
 
-  std::vector<double> newx, newn;
+  std::vector<double> newx, newn, nearest;
   std::vector<int> src;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     const double *xi = atom->x[i];
-    const double bi = (double) state->body[i];
+    const int bi = state->body[i];
+    long long ci[3];
+    cell_of(xi, ci);
     double c[3] = {0.0, 0.0, 0.0}, wsum = 0.0, cn[3] = {0.0, 0.0, 0.0};
+    nearest.clear();
     for (int a = -reach; a <= reach; a++)
       for (int b = -reach; b <= reach; b++)
         for (int cc = -reach; cc <= reach; cc++) {
-          auto it = grid.find(cellkey(xi[0] + a * cut, xi[1] + b * cut, xi[2] + cc * cut));
+          const long long cj[3] = {ci[0] + a, ci[1] + b, ci[2] + cc};
+          auto it = grid.find(key_of(cj));
           if (it == grid.end()) continue;
           for (int k : it->second) {
-            const double *p = &pts[4 * k];
-            if (p[3] != bi) continue;
-            const double d[3] = {p[0] - xi[0], p[1] - xi[1], p[2] - xi[2]};
+            const Pt &p = pts[k];
+            if (p.body != bi) continue;
+            const double d[3] = {p.x[0] - xi[0], p.x[1] - xi[1], p.x[2] - xi[2]};
             const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (r > 0.0 && r < NEAR_SHELL * spacing) nearest.insert(nearest.end(), {d[0], d[1], d[2]});
             double w, dw;
             if (ESPH::kernel_eval(ESPH::CUBIC, 3, normn, 1.0 / hn, r, w, dw)) {
               cn[0] += w * d[0];
@@ -329,10 +399,23 @@ void FixESPHBoundary::generate()
     const double len = sqrt(cn[0] * cn[0] + cn[1] * cn[1] + cn[2] * cn[2]);
     if (len == 0.0) continue;
     const double n[3] = {-cn[0] / len, -cn[1] / len, -cn[2] / len};
-    // half a spacing outside along each lattice direction the normal points to
-    const double nmax = MAX(fabs(n[0]), MAX(fabs(n[1]), fabs(n[2])));
+    // where the ray along the normal leaves the particle's Voronoi cell among its nearest
+    // neighbours and their mirror images through it (the missing neighbours outside):
+    // cell faces at |d|^2 / (2 n.d). On a lattice body that is the lattice cell of the
+    // particle (a cube on a simple cubic lattice, in any orientation), so faces of the
+    // body stay flat up to its edges and corners
+    double t = HUGE_VAL;
+    for (size_t k = 0; k < nearest.size(); k += 3) {
+      const double *d = &nearest[k];
+      const double nd = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+      if (nd == 0.0) continue;
+      const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      // the neighbour itself (n.d > 0) or its mirror image (n.d < 0)
+      t = MIN(t, dd / (2.0 * fabs(nd)));
+    }
+    if (t > spacing) t = (t == HUGE_VAL) ? 0.5 * spacing : spacing;
     for (int d = 0; d < 3; d++) {
-      newx.push_back(xi[d] + 0.5 * spacing * n[d] / nmax);
+      newx.push_back(xi[d] + t * n[d]);
       newn.push_back(n[d]);
     }
     src.push_back(i);

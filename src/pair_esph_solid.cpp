@@ -57,6 +57,9 @@ static constexpr int A_WSUM = 15;     // sum_k W_ik
 static constexpr int A_M =
     16;    // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
 static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i) W_ij (xsph)
+static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles with a gap
+static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
+static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
 
 // optional pair terms, bits of the last template parameter of pair_loop()
 static constexpr int EXTRA_ASTRESS = 1;
@@ -68,6 +71,7 @@ static constexpr int B_VSUM = 12;    // 12..14: sum_p V_p W_kp v_p
 static constexpr int B_WSUM = 15;    // sum_p V_p W_kp
 static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
 static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
+static constexpr int B_GAP = 28;     // 28..30: best facing partner: score, gap, gap rate
 
 // slots of the hoisted array hq[i][*]
 static constexpr int Q_V = 0;    // 0..2 predicted velocity
@@ -76,14 +80,15 @@ static constexpr int Q_C = 4;
 static constexpr int Q_H = 5;
 static constexpr int Q_A = 6;     // 6..11 sigma / rho^2 (Voigt)
 static constexpr int Q_N = 12;    // 12..14 normal
-static constexpr int Q_DEPTH = 15;
+static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
 static constexpr int Q_E = 16;
 static constexpr int Q_ZETA = 17;
+static constexpr int Q_GAPV = 18;    // its rate (d_esph_gapv)
 // with the artificial stress only (not communicated: computed for ghosts from Q_A)
-static constexpr int Q_R = 18;        // 18..23 artificial stress R / rho^2 (Voigt)
-static constexpr int Q_RFLAG = 24;    // 1 if R != 0
+static constexpr int Q_R = 19;        // 19..24 artificial stress R / rho^2 (Voigt)
+static constexpr int Q_RFLAG = 25;    // 1 if R != 0
 
-enum { COMM_HOIST, COMM_ACC, COMM_NORMALS };
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS };
 
 static constexpr double BIG_DT = 1.0e300;
 
@@ -99,7 +104,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   restartinfo = 0;
   one_coeff = 0;
   manybody_flag = 0;
-  comm_forward = NHQ;
+  comm_forward = 19;    // 12 + 5 contact geometry + 2 heat
   comm_reverse = NACC;
 
   h0 = 0.0;
@@ -112,6 +117,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
   comm_stage = COMM_HOIST;
+  comm_bnd = 0;
   nforward = nreverse = 0;
 
   state = new ESPHState(lmp);
@@ -132,7 +138,7 @@ void PairESPHSolid::set_defaults()
   hvar_flag = 0;
   hmax = 1.0;
   contact = CONTACT_SOLID;
-  gaptol = 1.0e-3;
+  gaptol = 0.05;
   correct_flag = 0;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -588,7 +594,8 @@ void PairESPHSolid::hoist()
     q[Q_N] = state->n[i][0];
     q[Q_N + 1] = state->n[i][1];
     q[Q_N + 2] = state->n[i][2];
-    q[Q_DEPTH] = state->depth[i];
+    q[Q_GAP] = state->gap[i];
+    q[Q_GAPV] = state->gapv[i];
     if (rmass[i] > 0.0) {
       const int itype = type[i];
       const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
@@ -648,7 +655,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
   const int bnd = (nboundary > 0);
 
   // forward communication of what neighbours need, in one message
-  nforward = 12 + (bnd ? 4 : 0) + (heat_flag ? 2 : 0);
+  comm_bnd = bnd;
+  nforward = 12 + (bnd ? 5 : 0) + (heat_flag ? 2 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;
@@ -722,6 +730,35 @@ static inline void add_normal_sums(double *ap, double w, double sgn, const doubl
 }
 
 /* ----------------------------------------------------------------------
+   real particle p takes the gap of its own body's boundary particle k (with
+   kernel weight w), extrapolated by dt with its rate to the present
+------------------------------------------------------------------------- */
+
+static inline void add_gap_sums(double *ap, double w, const double *qk, double dt)
+{
+  if (qk[Q_GAP] >= GAP_NONE) return;
+  ap[A_GW] += w;
+  ap[A_GG] += w * (qk[Q_GAP] + dt * qk[Q_GAPV]);
+  ap[A_GV] += w * qk[Q_GAPV];
+}
+
+/* ----------------------------------------------------------------------
+   boundary particles i and j of different bodies: gap candidate for both
+   (the same number seen from either side), see esph_contact.h
+------------------------------------------------------------------------- */
+
+static inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double *qj,
+                                const double *dx)
+{
+  const double xab[3] = {-dx[0], -dx[1], -dx[2]};
+  const double vab[3] = {qj[Q_V] - qi[Q_V], qj[Q_V + 1] - qi[Q_V + 1], qj[Q_V + 2] - qi[Q_V + 2]};
+  double c, g, gd;
+  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, c, g, gd)) return;
+  contact_bnd_keep(ai + B_GAP, c, g, gd);
+  if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
+}
+
+/* ----------------------------------------------------------------------
    the pair loop: one pass over the half neighbour list
    real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
    real-real other body: contact rule (section 4.3), normal components only
@@ -743,7 +780,9 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   // constant h: kernel normalisation once
   const double norm0 = kernel_norm(kernel, dim, h0);
   const double hinv0 = 1.0 / h0;
-  const double gap_tol = gaptol * h0;
+  const double gap_band = gaptol * h0;
+  const double dt = update->dt;
+  const int solid = (contact == CONTACT_SOLID);
   // artificial stress: 1 / W(dp) at constant h
   double wdp_inv0 = 0.0;
   constexpr int AST = EXTRA & EXTRA_ASTRESS;
@@ -780,7 +819,12 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       if (rsq >= cutsq_global) continue;
       const double mj = rmass[j];
-      if (BND && mi == 0.0 && mj == 0.0) continue;
+      if (BND && mi == 0.0 && mj == 0.0) {
+        // two boundary particles: the surface gap between different bodies
+        if (solid && bi != body[j])
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx);
+        continue;
+      }
       const double *qj = hq[j];
 
       double hij, norm, hinv;
@@ -835,7 +879,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           }
           ak[B_WSUM] += Vp * w;
         }
-        if (p < nlocal || newton_pair || p == i) { add_normal_sums(acc[p], w, sgn, dx, qk + Q_N); }
+        if (p < nlocal || newton_pair || p == i) {
+          add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
+          if (solid) add_gap_sums(acc[p], w, qk, dt);
+        }
         continue;
       }
 
@@ -899,15 +946,26 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
 
       if (cross) {
         double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
-        const double gap = contact_gap(dx, nc, qi[Q_DEPTH], qj[Q_DEPTH]);
         // with newton off a pair with a ghost partner is on two ranks: count it once
         const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
-        if (gap <= gap_tol && count_pair) ntouch_pairs++;
-        if (!contact_gate(contact, gap, gap_tol, vn, xn, fn)) continue;
-        // no tension across contact: a touching pair that would pull does not interact at
-        // all (also not in the strain rate and energy, which would otherwise see work that
-        // no force does)
-        if (contact == CONTACT_SOLID && fn > 0.0) continue;
+        double phi = 1.0;
+        if (solid) {
+          // the gaps of both particles, brought to the present with their rates
+          const double gap = contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
+          if (gap <= 0.0 && count_pair) ntouch_pairs++;
+          phi = contact_weight(gap, gap_band);
+          // no tension across contact: a pair that would pull does not interact at all
+          // (also not in the strain rate and energy, which would otherwise see work that
+          // no force does)
+          if (phi == 0.0 || fn > 0.0) continue;
+        } else if (!contact_approach(vn, xn)) {
+          continue;
+        }
+        // the coupling weight scales force, strain rate and heating alike, so that the
+        // work of the force is what the internal energy receives
+        fn *= phi;
+        avh *= phi;
+        for (int a = 0; a < 3; a++) vij[a] *= phi;
         ff[0] = fn * nc[0];
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];
@@ -1130,6 +1188,7 @@ void PairESPHSolid::finalize(int eflag)
       }
     } else {
       // boundary particle: interpolated velocity and spin from the real particles (4.2)
+      store_bnd_gap(i);
       drho[i] = de[i] = dh[i] = 0.0;
       for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
       if (a[B_WSUM] > 0.0) {
@@ -1193,6 +1252,30 @@ void PairESPHSolid::store_normal(int i)
     state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
     state->depth[i] = 0.0;
   }
+  // the gap from the boundary particles of the own body, at the time of this computation
+  if (contact == CONTACT_SOLID && a[A_GW] > 0.0) {
+    state->gap[i] = a[A_GG] / a[A_GW];
+    state->gapv[i] = a[A_GV] / a[A_GW];
+  } else {
+    state->gap[i] = GAP_NONE;
+    state->gapv[i] = 0.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   gap of boundary particle i from its best facing partner of another body
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::store_bnd_gap(int i)
+{
+  const double *b = acc[i] + B_GAP;
+  if (b[0] > 0.0) {
+    state->gap[i] = b[1];
+    state->gapv[i] = b[2];
+  } else {
+    state->gap[i] = GAP_NONE;
+    state->gapv[i] = 0.0;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1204,35 +1287,46 @@ void PairESPHSolid::store_normal(int i)
 void PairESPHSolid::compute_normals()
 {
   double **x = atom->x;
+  double **v = atom->v;
   const double *rmass = state->rmass;
   const int *body = state->body;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
   const double cutsq_global = cut_global * cut_global;
+  const int solid = (contact == CONTACT_SOLID);
 
-  // normals of the boundary particles must be known on ghosts
+  // normals, h and velocities of the boundary particles must be known on ghosts
   for (int i = 0; i < nlocal; i++) {
-    hq[i][Q_N] = state->n[i][0];
-    hq[i][Q_N + 1] = state->n[i][1];
-    hq[i][Q_N + 2] = state->n[i][2];
+    for (int d = 0; d < 3; d++) {
+      hq[i][Q_N + d] = state->n[i][d];
+      hq[i][Q_V + d] = v[i][d];
+    }
     hq[i][Q_H] = state->h[i];
   }
   comm_stage = COMM_NORMALS;
-  comm->forward_comm(this, 4);
-  for (int i = 0; i < nall; i++)
+  comm->forward_comm(this, 7);
+  for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
+    for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+  }
 
+  // pass 1: normal sums of real particles, gaps of boundary particles
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      if ((rmass[i] == 0.0) == (rmass[j] == 0.0)) continue;
-      if (body[i] != body[j]) continue;
       const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       if (rsq >= cutsq_global) continue;
+      if (rmass[i] == 0.0 && rmass[j] == 0.0) {
+        if (solid && body[i] != body[j])
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx);
+        continue;
+      }
+      if (rmass[i] > 0.0 && rmass[j] > 0.0) continue;
+      if (body[i] != body[j]) continue;
       const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
       double w, dw;
       if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w, dw))
@@ -1246,11 +1340,56 @@ void PairESPHSolid::compute_normals()
   }
   if (newton_pair) {
     comm_stage = COMM_NORMALS;
-    comm->reverse_comm(this, 5);
+    comm->reverse_comm(this, 8);
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (rmass[i] == 0.0) {
+      store_bnd_gap(i);
+      hq[i][Q_GAP] = state->gap[i];
+      hq[i][Q_GAPV] = state->gapv[i];
+    } else {
+      for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+    }
+  }
+
+  // pass 2: gaps of real particles from their own boundary particles
+  if (solid) {
+    comm_stage = COMM_GAPS;
+    comm->forward_comm(this, 2);
+    for (int i = nlocal; i < nall; i++)
+      for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if ((rmass[i] == 0.0) == (rmass[j] == 0.0)) continue;
+        if (body[i] != body[j]) continue;
+        const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+        const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+        if (rsq >= cutsq_global) continue;
+        const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
+        double w, dw;
+        if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w,
+                         dw))
+          continue;
+        const int p = (rmass[i] > 0.0) ? i : j;
+        const int k = (p == i) ? j : i;
+        if (p >= nlocal && !newton_pair && p != i) continue;
+        // the gaps are of this moment: no extrapolation
+        add_gap_sums(acc[p], w, hq[k], 0.0);
+      }
+    }
+    if (newton_pair) {
+      comm_stage = COMM_GAPS;
+      comm->reverse_comm(this, 3);
+    }
   }
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) continue;
     store_normal(i);
+    // the force computation brings the gap forward by one step: it is of now
+    if (state->gap[i] < GAP_NONE) state->gap[i] -= update->dt * state->gapv[i];
   }
   normals_valid = 1;
 }
@@ -1263,19 +1402,27 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
   if (comm_stage == COMM_NORMALS) {
     for (int i = 0; i < n; i++) {
       const double *q = hq[list[i]];
-      buf[m++] = q[Q_N];
-      buf[m++] = q[Q_N + 1];
-      buf[m++] = q[Q_N + 2];
+      for (int k = 0; k < 3; k++) buf[m++] = q[Q_N + k];
       buf[m++] = q[Q_H];
+      for (int k = 0; k < 3; k++) buf[m++] = q[Q_V + k];
     }
     return m;
   }
-  const int bnd = (nforward >= 16);
+  if (comm_stage == COMM_GAPS) {
+    for (int i = 0; i < n; i++) {
+      const double *q = hq[list[i]];
+      buf[m++] = q[Q_GAP];
+      buf[m++] = q[Q_GAPV];
+    }
+    return m;
+  }
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
     for (int k = 0; k < 12; k++) buf[m++] = q[k];
-    if (bnd)
-      for (int k = Q_N; k <= Q_DEPTH; k++) buf[m++] = q[k];
+    if (comm_bnd) {
+      for (int k = Q_N; k <= Q_GAP; k++) buf[m++] = q[k];
+      buf[m++] = q[Q_GAPV];
+    }
     if (heat_flag) {
       buf[m++] = q[Q_E];
       buf[m++] = q[Q_ZETA];
@@ -1293,19 +1440,26 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
   if (comm_stage == COMM_NORMALS) {
     for (int i = first; i < last; i++) {
       double *q = hq[i];
-      q[Q_N] = buf[m++];
-      q[Q_N + 1] = buf[m++];
-      q[Q_N + 2] = buf[m++];
+      for (int k = 0; k < 3; k++) q[Q_N + k] = buf[m++];
       q[Q_H] = buf[m++];
+      for (int k = 0; k < 3; k++) q[Q_V + k] = buf[m++];
     }
     return;
   }
-  const int bnd = (nforward >= 16);
+  if (comm_stage == COMM_GAPS) {
+    for (int i = first; i < last; i++) {
+      hq[i][Q_GAP] = buf[m++];
+      hq[i][Q_GAPV] = buf[m++];
+    }
+    return;
+  }
   for (int i = first; i < last; i++) {
     double *q = hq[i];
     for (int k = 0; k < 12; k++) q[k] = buf[m++];
-    if (bnd)
-      for (int k = Q_N; k <= Q_DEPTH; k++) q[k] = buf[m++];
+    if (comm_bnd) {
+      for (int k = Q_N; k <= Q_GAP; k++) q[k] = buf[m++];
+      q[Q_GAPV] = buf[m++];
+    }
     if (heat_flag) {
       q[Q_E] = buf[m++];
       q[Q_ZETA] = buf[m++];
@@ -1313,16 +1467,26 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   reverse communication: sums, except for the gap candidates of boundary
+   particles, of which the better one is kept (contact_bnd_keep)
+------------------------------------------------------------------------- */
 
 int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   const int last = first + n;
-  const int k0 = (comm_stage == COMM_NORMALS) ? A_NSUM : 0;
-  const int k1 = (comm_stage == COMM_NORMALS) ? A_WSUM + 1 : nreverse;
-  for (int i = first; i < last; i++)
-    for (int k = k0; k < k1; k++) buf[m++] = acc[i][k];
+  for (int i = first; i < last; i++) {
+    const double *a = acc[i];
+    if (comm_stage == COMM_NORMALS) {
+      for (int k = A_NSUM; k <= A_WSUM; k++) buf[m++] = a[k];
+      for (int k = A_GW; k <= A_GV; k++) buf[m++] = a[k];
+    } else if (comm_stage == COMM_GAPS) {
+      for (int k = A_GW; k <= A_GV; k++) buf[m++] = a[k];
+    } else {
+      for (int k = 0; k < nreverse; k++) buf[m++] = a[k];
+    }
+  }
   return m;
 }
 
@@ -1331,11 +1495,29 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
 void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
-  const int k0 = (comm_stage == COMM_NORMALS) ? A_NSUM : 0;
-  const int k1 = (comm_stage == COMM_NORMALS) ? A_WSUM + 1 : nreverse;
+  const double *rmass = state->rmass;
   for (int i = 0; i < n; i++) {
-    double *a = acc[list[i]];
-    for (int k = k0; k < k1; k++) a[k] += buf[m++];
+    const int j = list[i];
+    double *a = acc[j];
+    int k0 = 0, k1 = nreverse;
+    if (comm_stage == COMM_NORMALS) {
+      for (int k = A_NSUM; k <= A_WSUM; k++) a[k] += buf[m++];
+      k0 = A_GW;
+      k1 = A_GV + 1;
+    } else if (comm_stage == COMM_GAPS) {
+      k0 = A_GW;
+      k1 = A_GV + 1;
+    }
+    const int gaps = (k1 > A_GW) && (rmass[j] == 0.0);
+    for (int k = k0; k < k1; k++) {
+      if (gaps && k == B_GAP) {
+        contact_bnd_keep(a + B_GAP, buf[m], buf[m + 1], buf[m + 2]);
+        m += 3;
+        k += 2;
+      } else {
+        a[k] += buf[m++];
+      }
+    }
   }
 }
 

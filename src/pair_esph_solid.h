@@ -46,9 +46,9 @@ class PairESPHSolid : public Pair {
   void *extract(const char *, int &) override;
 
   // accumulator slots (real particles | boundary particles), see compute()
-  static constexpr int NACC = 28;
+  static constexpr int NACC = 31;
   // hoisted per-particle quantities sent to ghosts every step
-  static constexpr int NHQ = 18;
+  static constexpr int NHQ = 19;
   // more hoisted quantities per atom with the artificial stress (R and its flag)
   static constexpr int NHQ_AST = 7;
 
@@ -89,6 +89,7 @@ class PairESPHSolid : public Pair {
   double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
   int hq_cols;                     // columns of hq: NHQ, + NHQ_AST with the artificial stress
   int comm_stage;
+  int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;
 
   int pred_valid;        // inside a step: the integrator's predicted end-of-step state is valid
@@ -108,6 +109,7 @@ class PairESPHSolid : public Pair {
   void hoist();
   void finalize(int eflag);
   void compute_normals();
+  void store_bnd_gap(int);
   void store_normal(int);
   void artificial_stress();
   void run_pair_loop(int);

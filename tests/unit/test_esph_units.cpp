@@ -216,8 +216,8 @@ TEST(Strength, HookeDeviator)
   EXPECT_DOUBLE_EQ(ds[3], 0.0);
 }
 
-// Contact rule: the common normal, the gap and the gate of both rules.
-TEST(Contact, NormalGapGate)
+// Contact rule: the common normal, the surface gap from boundary particles, the weight.
+TEST(Contact, NormalGapWeight)
 {
   // i in the left body (normal +x), j in the right body (normal -x), one spacing apart
   const double ni[3] = {1, 0, 0}, nj[3] = {-1, 0, 0}, xij[3] = {-1.0, 0.3, 0};
@@ -225,21 +225,64 @@ TEST(Contact, NormalGapGate)
   contact_normal(ni, nj, xij, nc);
   EXPECT_DOUBLE_EQ(nc[0], 1.0);
   EXPECT_DOUBLE_EQ(nc[1], 0.0);
-  // depths 0.5 each: surfaces touch
-  EXPECT_NEAR(contact_gap(xij, nc, 0.5, 0.5), 0.0, 1e-15);
-  EXPECT_NEAR(contact_gap(xij, nc, 0.4, 0.5), 0.1, 1e-15);
-  const double xn = -1.0;
-  // approaching (i moves towards j: vij.nc > 0)
-  EXPECT_TRUE(contact_gate(CONTACT_SOLID, 0.0, 0.01, +1.0, xn, +5.0));
-  EXPECT_TRUE(contact_gate(CONTACT_PAPER, 0.0, 0.01, +1.0, xn, +5.0));
-  // separating under compression: solid keeps contact, paper releases (chatter)
-  EXPECT_TRUE(contact_gate(CONTACT_SOLID, 0.0, 0.01, -1.0, xn, -5.0));
-  EXPECT_FALSE(contact_gate(CONTACT_PAPER, 0.0, 0.01, -1.0, xn, -5.0));
-  // separating in tension: both release
-  EXPECT_FALSE(contact_gate(CONTACT_SOLID, 0.0, 0.01, -1.0, xn, +5.0));
-  // open gap: solid ignores even approaching pairs, paper does not look at gaps
-  EXPECT_FALSE(contact_gate(CONTACT_SOLID, 0.5, 0.01, +1.0, xn, -5.0));
-  EXPECT_TRUE(contact_gate(CONTACT_PAPER, 0.5, 0.01, +1.0, xn, -5.0));
+
+  // boundary particles a (left body, normal +x) and b (right body) 0.2 apart along x and
+  // 0.7 across: the gap is the distance of the faces, whatever the lateral offset
+  const double vab[3] = {-3.0, 1.0, 0.0};    // b approaches at 3, slides at 1
+  double c, g, gd;
+  const double xab[3] = {0.2, 0.7, 0.0};
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, c, g, gd));
+  EXPECT_DOUBLE_EQ(g, 0.2);
+  EXPECT_DOUBLE_EQ(gd, -3.0);
+  EXPECT_NEAR(c, 1.0 + 0.2 / sqrt(0.53), 1e-15);
+  // seen from b: the same gap and rate
+  const double xba[3] = {-0.2, -0.7, 0.0}, vba[3] = {3.0, -1.0, 0.0};
+  double c2, g2, gd2;
+  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, c2, g2, gd2));
+  EXPECT_DOUBLE_EQ(g2, g);
+  EXPECT_DOUBLE_EQ(gd2, gd);
+  EXPECT_DOUBLE_EQ(c2, c);
+  // a face rotated by 30 degrees: still the face distance
+  const double t = M_PI / 6, ra[3] = {cos(t), sin(t), 0}, rb[3] = {-cos(t), -sin(t), 0};
+  const double xr[3] = {0.2 * cos(t) - 0.7 * sin(t), 0.2 * sin(t) + 0.7 * cos(t), 0.0};
+  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, c, g, gd));
+  EXPECT_NEAR(g, 0.2, 1e-15);
+  // overlap: negative gap
+  const double xo[3] = {-0.1, 0.0, 0.0};
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, c, g, gd));
+  EXPECT_DOUBLE_EQ(g, -0.1);
+  EXPECT_DOUBLE_EQ(c, 2.0);
+  // side by side surfaces (normals within 60 degrees) do not face each other
+  const double ns[3] = {cos(0.9), sin(0.9), 0.0};
+  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, c, g, gd));
+
+  // the better candidate: larger alignment, then the smaller gap; order independent
+  double best1[3] = {0, 0, 0}, best2[3] = {0, 0, 0};
+  const double cand[3][3] = {{1.5, 0.3, 1.0}, {1.9, 0.4, 2.0}, {1.9, 0.2, 3.0}};
+  for (int k = 0; k < 3; k++) contact_bnd_keep(best1, cand[k][0], cand[k][1], cand[k][2]);
+  for (int k = 2; k >= 0; k--) contact_bnd_keep(best2, cand[k][0], cand[k][1], cand[k][2]);
+  for (int k = 0; k < 3; k++) {
+    EXPECT_EQ(best1[k], cand[2][k]);
+    EXPECT_EQ(best2[k], cand[2][k]);
+  }
+
+  // the pair's gap: either particle's closed gap closes it
+  EXPECT_EQ(contact_gap_pair(0.3, -0.1), -0.1);
+  EXPECT_EQ(contact_gap_pair(GAP_NONE, 0.2), 0.2);
+  EXPECT_EQ(contact_gap_pair(GAP_NONE, GAP_NONE), GAP_NONE);
+  // the weight: 1 closed, 0 open beyond the band, C1 smooth in between
+  EXPECT_EQ(contact_weight(-0.5, 0.05), 1.0);
+  EXPECT_EQ(contact_weight(0.0, 0.05), 1.0);
+  EXPECT_EQ(contact_weight(0.05, 0.05), 0.0);
+  EXPECT_EQ(contact_weight(GAP_NONE, 0.05), 0.0);
+  EXPECT_DOUBLE_EQ(contact_weight(0.025, 0.05), 0.5);
+  const double e = 1e-7;
+  // one-sided slopes vanish at both ends (the mean slope over the band is 1 / 0.05 = 20)
+  EXPECT_NEAR((contact_weight(e, 0.05) - 1.0) / e, 0.0, 1e-3);
+  EXPECT_NEAR(contact_weight(0.05 - e, 0.05) / e, 0.0, 1e-3);
+  // paper rule: approaching along nc
+  EXPECT_TRUE(contact_approach(+1.0, -1.0));
+  EXPECT_FALSE(contact_approach(-1.0, -1.0));
   // normals that cancel: fall back on the separation direction
   const double n0[3] = {0, 0, 0};
   contact_normal(n0, n0, xij, nc);
