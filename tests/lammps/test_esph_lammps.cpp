@@ -210,8 +210,7 @@ TEST_F(ESPHTest, ZeroMassWithoutBoundaryRole)
   command("set atom 1 mass 1.0");       // valid
   command("set atom 5 mass v_zero");    // set mass rejects 0, a variable does not
   END_HIDE_OUTPUT();
-  TEST_FAILURE(".*ERROR on proc 0: Atom 5 has zero mass but no boundary normal.*",
-               command("run 0 post no"););
+  TEST_FAILURE(".*ERROR: Atom 5 has zero mass but no boundary normal.*", command("run 0 post no"););
 }
 
 TEST_F(ESPHTest, BoundaryWithoutBody)
@@ -252,7 +251,7 @@ TEST_F(ESPHTest, GivenBoundaryParticles)
   BEGIN_HIDE_OUTPUT();
   command("set atom 66 d2_esph_n[2] 1.0");    // length sqrt(2)
   END_HIDE_OUTPUT();
-  TEST_FAILURE(".*ERROR on proc 0: Boundary particle 66 of fix esph/boundary has a normal of "
+  TEST_FAILURE(".*ERROR: Boundary particle 66 of fix esph/boundary has a normal of "
                "length 1.41.*, not a unit normal.*",
                command("run 0 post no"););
 }
