@@ -27,8 +27,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_check.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
+#include "force.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
@@ -51,6 +53,12 @@ static constexpr double SURFACE_OFFSET = 0.05;
 // placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
 // diagonals of simple cubic
 static constexpr double NEAR_SHELL = 1.5;
+// the spacing keyword against the median nearest-neighbour distance of the real particles:
+// a warning beyond SPACING_WARN, an error beyond SPACING_ERROR (at twice the spacing the
+// surface detection marks inner layers and puts boundary particles inside the body; at
+// half of it the detection kernel sees no neighbours)
+static constexpr double SPACING_WARN = 1.1;
+static constexpr double SPACING_ERROR = 1.5;
 
 /* ---------------------------------------------------------------------- */
 
@@ -98,9 +106,59 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   }
   if (mode == GENERATE && spacing == 0.0)
     error->all(FLERR, "Fix esph/boundary needs the particle spacing: spacing <value>");
+}
 
+/* ----------------------------------------------------------------------
+   the state fixes and the boundary particles are created here, not in the
+   constructor: Modify is still adding this fix while its constructor runs
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::post_constructor()
+{
   state = new ESPHState(lmp);
-  if (mode == GENERATE) generate();
+  if (mode != GENERATE) return;
+
+  state->fetch();
+  // zero-mass particles in the group are taken as existing boundary particles (after
+  // read_restart or read_data): they must have normals, else they are real particles
+  // whose mass was not set
+  bigint nzero = 0, nzero_all, ngroup = 0, ngroup_all;
+  tagint bad = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (atom->mask[i] & groupbit) ngroup++;
+    if (!(atom->mask[i] & groupbit) || state->rmass[i] != 0.0) continue;
+    nzero++;
+    const double *n = state->n[i];
+    if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] < 0.25 && (bad == 0 || atom->tag[i] < bad))
+      bad = atom->tag[i] > 0 ? atom->tag[i] : 1;
+  }
+  MPI_Allreduce(&nzero, &nzero_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&ngroup, &ngroup_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  // (all of the group without mass: generate() says so)
+  if (nzero_all < ngroup_all)
+    ESPHCheck::first_error(lmp, bad,
+                           fmt::format("Fix esph/boundary: atom {} in group {} has zero mass but "
+                                       "no normal, so it is no boundary particle: set the masses "
+                                       "of all real particles before defining this fix",
+                                       bad, group->names[igroup]));
+  // new boundary particles (not reused ones): the spacing must be the particles' spacing
+  if (nzero_all == 0) {
+    const double ratio = ESPHCheck::spacing_ratio(lmp, state, groupbit, spacing);
+    if (ratio > 0.0) {
+      const double off = MAX(ratio, 1.0 / ratio);
+      const std::string what = fmt::format("Fix esph/boundary spacing {} but the real particles of "
+                                           "group {} are {:.4g} apart (median "
+                                           "nearest-neighbour distance, {:.3g} x spacing)",
+                                           spacing, group->names[igroup], ratio * spacing, ratio);
+      if (off > SPACING_ERROR)
+        error->all(FLERR, "{}: set spacing to the particle (lattice) spacing", what);
+      if (off > SPACING_WARN && comm->me == 0)
+        error->warning(FLERR, "{}: the boundary particles are placed for the given spacing", what);
+    }
+  }
+  generate();
+  // what the boundary particles are for: later changes of the bodies are caught in init()
+  made_for = ESPHCheck::body_counts(lmp, state, groupbit);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -124,9 +182,24 @@ int FixESPHBoundary::setmask()
 
 void FixESPHBoundary::init()
 {
+  if (!force->pair_match("^esph/solid", 0))
+    error->all(FLERR, Error::NOLASTLINE, "Fix esph/boundary requires pair style esph/solid");
+  // generated boundary particles belong to the bodies as they were at generation
+  if (mode == GENERATE) {
+    const auto now = ESPHCheck::body_counts(lmp, state, groupbit);
+    if (now != made_for)
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Fix esph/boundary {} generated its boundary particles for the real particles "
+                 "({}) but group {} now holds ({}): define fix esph/boundary after the masses "
+                 "and body IDs (i_esph_body) are set, and do not change them afterwards",
+                 id, ESPHCheck::format_bodies(made_for), group->names[igroup],
+                 ESPHCheck::format_bodies(now));
+  }
   state->fetch();
   const int *mask = atom->mask;
   std::vector<int> real_bodies, bnd_bodies;
+  tagint bad = 0;
+  double badlen = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     if (state->rmass[i] > 0.0) {
@@ -135,33 +208,18 @@ void FixESPHBoundary::init()
     }
     const double *n = state->n[i];
     const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    if (fabs(n2 - 1.0) > 1.0e-6)
-      error->one(FLERR, Error::NOLASTLINE,
-                 "Boundary particle {} of fix esph/boundary has a normal of length {}, not a unit "
-                 "normal",
-                 atom->tag[i], sqrt(n2));
+    if (fabs(n2 - 1.0) > 1.0e-6 && (bad == 0 || atom->tag[i] < bad)) {
+      bad = atom->tag[i] > 0 ? atom->tag[i] : 1;
+      badlen = sqrt(n2);
+    }
     bnd_bodies.push_back(state->body[i]);
   }
-  // global sets of bodies
-  auto gather = [this](std::vector<int> &v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    int n = v.size();
-    std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
-    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    int total = 0;
-    for (int p = 0; p < comm->nprocs; p++) {
-      displs[p] = total;
-      total += counts[p];
-    }
-    std::vector<int> all(total);
-    MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
-    std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    v = all;
-  };
-  gather(real_bodies);
-  gather(bnd_bodies);
+  ESPHCheck::first_error(lmp, bad,
+                         fmt::format("Boundary particle {} of fix esph/boundary has a normal of "
+                                     "length {}, not a unit normal",
+                                     bad, badlen));
+  real_bodies = ESPHCheck::global_set(lmp, real_bodies);
+  bnd_bodies = ESPHCheck::global_set(lmp, bnd_bodies);
   if (bnd_bodies.empty())
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/boundary group {} has no boundary particles",
                group->names[igroup]);

@@ -22,12 +22,15 @@ FixStyle(esph/boundary,FixESPHBoundary);
 
 #include "fix.h"
 
+#include <map>
+
 namespace LAMMPS_NS {
 
 class FixESPHBoundary : public Fix {
  public:
   FixESPHBoundary(class LAMMPS *, int, char **);
   ~FixESPHBoundary() override;
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   double compute_scalar() override;
@@ -39,6 +42,8 @@ class FixESPHBoundary : public Fix {
   int mode;          // GENERATE or GIVEN
   bigint ncreated;
   class ESPHState *state;
+  // real particles per body the boundary particles were generated (or found) for
+  std::map<int, bigint> made_for;
 
   void generate();
 };

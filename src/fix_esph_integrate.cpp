@@ -100,9 +100,19 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   // with move no another fix (e.g. fix move) integrates the motion
   time_integrate = move;
 
-  state = new ESPHState(lmp);
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+}
+
+/* ----------------------------------------------------------------------
+   the state fixes are created here, not in the constructor: Modify is still
+   adding this fix while its constructor runs, and a fix added from there
+   would take its slot
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::post_constructor()
+{
+  state = new ESPHState(lmp);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -28,6 +28,7 @@ class FixESPHIntegrate : public Fix {
  public:
   FixESPHIntegrate(class LAMMPS *, int, char **);
   ~FixESPHIntegrate() override;
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup(int) override;

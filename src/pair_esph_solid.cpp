@@ -23,6 +23,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
@@ -458,6 +459,8 @@ void PairESPHSolid::init_style()
     error->all(FLERR, Error::NOLASTLINE,
                "Pair esph/solid requires fix esph/integrate to advance the SPH state");
   fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);
+  // with move no another fix moves the particles; otherwise no other fix may
+  ESPHCheck::integrators(lmp, fix_int, fix_int->move);
   if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
     // contact needs boundary particles only when there is more than one body
     int lmin = 1 << 30, lmax = -(1 << 30);
@@ -505,23 +508,12 @@ void PairESPHSolid::setup()
   for (int i = 0; i < nlocal; i++) {
     if (state->rho[i] == 0.0) state->rho[i] = eos[type[i]].rho0;
     if (state->h[i] == 0.0) state->h[i] = h0;
-    if (state->h[i] > cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12))
-      error->one(FLERR, Error::NOLASTLINE,
-                 "Atom {} has smoothing length {} larger than the pair esph/solid cutoff allows "
-                 "({}): increase hvar",
-                 atom->tag[i], state->h[i], cut_global / KERNEL_SUPPORT);
-    if (state->rmass[i] < 0.0)
-      error->one(FLERR, Error::NOLASTLINE, "Atom {} has negative mass {}", atom->tag[i],
-                 state->rmass[i]);
-    if (state->rmass[i] == 0.0) {
-      const double *n = state->n[i];
-      if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] < 0.25)
-        error->one(FLERR, Error::NOLASTLINE,
-                   "Atom {} has zero mass but no boundary normal: zero-mass particles must be "
-                   "boundary particles of fix esph/boundary",
-                   atom->tag[i]);
-    }
   }
+  // the state the run starts from, and the arrangement of the particles (one pass each)
+  ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT);
+  ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim);
+  if (contact != CONTACT_OFF)
+    ESPHCheck::contact_bodies(lmp, state, contact == CONTACT_PAPER ? "paper" : "solid");
   bigint nb = 0;
   for (int i = 0; i < nlocal; i++)
     if (state->rmass[i] == 0.0) nb++;

@@ -210,8 +210,7 @@ TEST_F(ESPHTest, ZeroMassWithoutBoundaryRole)
   command("set atom 1 mass 1.0");       // valid
   command("set atom 5 mass v_zero");    // set mass rejects 0, a variable does not
   END_HIDE_OUTPUT();
-  TEST_FAILURE(".*ERROR on proc 0: Atom 5 has zero mass but no boundary normal.*",
-               command("run 0 post no"););
+  TEST_FAILURE(".*ERROR: Atom 5 has zero mass but no boundary normal.*", command("run 0 post no"););
 }
 
 TEST_F(ESPHTest, BoundaryWithoutBody)
@@ -227,6 +226,101 @@ TEST_F(ESPHTest, BoundaryWithoutBody)
   END_HIDE_OUTPUT();
   TEST_FAILURE(".*ERROR: Body 0 has real particles but no boundary particles in fix "
                "esph/boundary.*",
+               command("run 0 post no"););
+}
+
+// the ESPH styles in any order: a fix before the pair style used to crash the next
+// command (the state fixes were added while Modify was still adding the fix)
+TEST_F(ESPHTest, FixBeforePairStyle)
+{
+  BEGIN_HIDE_OUTPUT();
+  command("units si");
+  command("atom_modify map array");
+  command("region box block -2e-4 6e-4 -2e-4 6e-4 -2e-4 6e-4");
+  command("create_box 1 box");
+  command("lattice sc 1e-4 origin 0.5 0.5 0.5");
+  command("region blk block 0 4e-4 0 4e-4 0 4e-4 units box");
+  command("create_atoms 1 region blk");
+  command("fix 1 all esph/integrate");
+  command("pair_style esph/solid 1.3e-4");
+  command("pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69");
+  command("set group all mass 7.85e-9");
+  command("neighbor 2e-5 bin");
+  command("run 2 post no");
+  END_HIDE_OUTPUT();
+  ASSERT_NE(lmp->modify->get_fix_by_id("ESPH_STATE"), nullptr);
+  EXPECT_EQ(lmp->atom->natoms, 64);
+}
+
+TEST_F(ESPHTest, FixWithoutPairStyle)
+{
+  BEGIN_HIDE_OUTPUT();
+  command("units si");
+  command("region box block 0 1e-3 0 1e-3 0 1e-3");
+  command("create_box 1 box");
+  command("create_atoms 1 single 5e-4 5e-4 5e-4");
+  command("fix 1 all esph/integrate");
+  command("fix 2 all esph/boundary given");
+  command("set group all mass 1e-9");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Fix esph/integrate requires pair style esph/solid.*",
+               command("run 0 post no"););
+}
+
+// the state every run starts from is checked; the error names atom, quantity and value
+TEST_F(ESPHTest, HostileState)
+{
+  block(4);
+  BEGIN_HIDE_OUTPUT();
+  command("fix 1 all esph/integrate");
+  command("set atom 3 d_esph_rho -7850");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Atom 3 has density d_esph_rho = -7850: it must be > 0 and finite.*",
+               command("run 0 post no"););
+  BEGIN_HIDE_OUTPUT();
+  command("set atom 3 d_esph_rho 7850");
+  command("set atom 7 d_esph_h -1e-4");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Atom 7 has smoothing length d_esph_h = -0.0001.*",
+               command("run 0 post no"););
+  BEGIN_HIDE_OUTPUT();
+  command("set atom 7 d_esph_h 1.3e-4");
+  command("set atom 9 d_esph_e -1e9");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Atom 9 \\(type 1\\) has no sound speed.*", command("run 0 post no"););
+  BEGIN_HIDE_OUTPUT();
+  command("set atom 9 d_esph_e 0");
+  command("create_atoms 1 single 0.5e-4 0.5e-4 0.5e-4 units box");
+  command("set atom 65 mass 7.85e-9");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Atoms 1 and 65 are at the same position.*", command("run 0 post no"););
+}
+
+TEST_F(ESPHTest, SecondIntegrator)
+{
+  block(4);
+  BEGIN_HIDE_OUTPUT();
+  command("fix 1 all esph/integrate");
+  command("fix 2 all nve");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Fix 2 \\(style nve\\) also integrates the motion of atoms of fix "
+               "esph/integrate 1.*",
+               command("run 0 post no"););
+}
+
+// boundary particles generated before the body IDs were set: the contact faces have none
+TEST_F(ESPHTest, BoundaryBeforeBodies)
+{
+  block();
+  BEGIN_HIDE_OUTPUT();
+  command("fix 1 all esph/integrate");
+  command("fix b all esph/boundary spacing 1e-4");
+  command("region half block INF 3e-4 INF INF INF INF units box");
+  command("set region half i_esph_body 1");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Fix esph/boundary b generated its boundary particles for the real "
+               "particles \\(body 0: 216\\) but group all now holds \\(body 0: 108, body 1: "
+               "108\\).*",
                command("run 0 post no"););
 }
 
@@ -252,7 +346,7 @@ TEST_F(ESPHTest, GivenBoundaryParticles)
   BEGIN_HIDE_OUTPUT();
   command("set atom 66 d2_esph_n[2] 1.0");    // length sqrt(2)
   END_HIDE_OUTPUT();
-  TEST_FAILURE(".*ERROR on proc 0: Boundary particle 66 of fix esph/boundary has a normal of "
+  TEST_FAILURE(".*ERROR: Boundary particle 66 of fix esph/boundary has a normal of "
                "length 1.41.*, not a unit normal.*",
                command("run 0 post no"););
 }

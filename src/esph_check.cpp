@@ -1,0 +1,385 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#include "esph_check.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_eos.h"
+#include "esph_state.h"
+#include "fix.h"
+#include "modify.h"
+#include "neigh_list.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+using namespace LAMMPS_NS;
+
+// tolerance of a unit normal: |n|^2 within this of 1 (rotation keeps it to round-off)
+static constexpr double UNIT_TOL = 1.0e-6;
+// bins per spacing of the nearest-neighbour histogram (median to 0.1 %)
+static constexpr int NN_BINS = 1000;
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::first_error(LAMMPS *lmp, tagint tag, const std::string &msg)
+{
+  MPI_Comm world = lmp->world;
+  // tags are >= 1; a rank without an offending atom competes with the largest value
+  bigint mine = (tag > 0) ? (bigint) tag : MAXBIGINT, best;
+  MPI_Allreduce(&mine, &best, 1, MPI_LMP_BIGINT, MPI_MIN, world);
+  if (best == MAXBIGINT) return;
+  // without atom IDs (all 0) several ranks may hold one: the lowest rank reports
+  int me = lmp->comm->me, nprocs = lmp->comm->nprocs;
+  int candidate = (mine == best) ? me : nprocs, owner;
+  MPI_Allreduce(&candidate, &owner, 1, MPI_INT, MPI_MIN, world);
+  int len = (me == owner) ? (int) msg.size() : 0;
+  MPI_Bcast(&len, 1, MPI_INT, owner, world);
+  std::string text(len, ' ');
+  if (me == owner) text = msg;
+  MPI_Bcast(&text[0], len, MPI_CHAR, owner, world);
+  lmp->error->all(FLERR, Error::NOLASTLINE, text);
+}
+
+/* ---------------------------------------------------------------------- */
+
+std::vector<int> ESPHCheck::global_set(LAMMPS *lmp, std::vector<int> v)
+{
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  const int nprocs = lmp->comm->nprocs;
+  int n = v.size();
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<int> all(total);
+  MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
+                 lmp->world);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+/* ---------------------------------------------------------------------- */
+
+std::map<int, bigint> ESPHCheck::body_counts(LAMMPS *lmp, ESPHState *state, int groupbit)
+{
+  state->fetch();
+  const int *mask = lmp->atom->mask;
+  std::map<int, bigint> local;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if ((mask[i] & groupbit) && state->rmass[i] > 0.0) local[state->body[i]]++;
+  std::vector<int> mine;
+  for (const auto &kv : local) mine.push_back(kv.first);
+  const std::vector<int> bodies = global_set(lmp, mine);
+  std::vector<bigint> n(bodies.size(), 0), total(bodies.size(), 0);
+  for (size_t k = 0; k < bodies.size(); k++) {
+    auto it = local.find(bodies[k]);
+    if (it != local.end()) n[k] = it->second;
+  }
+  MPI_Allreduce(n.data(), total.data(), (int) n.size(), MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  std::map<int, bigint> counts;
+  for (size_t k = 0; k < bodies.size(); k++) counts[bodies[k]] = total[k];
+  return counts;
+}
+
+/* ---------------------------------------------------------------------- */
+
+std::string ESPHCheck::format_bodies(const std::map<int, bigint> &counts)
+{
+  static constexpr int SHOWN = 6;
+  std::string s;
+  int k = 0;
+  for (const auto &kv : counts) {
+    if (k == SHOWN) {
+      s += fmt::format(", ... ({} bodies)", counts.size());
+      break;
+    }
+    s += fmt::format("{}body {}: {}", k ? ", " : "", kv.first, kv.second);
+    k++;
+  }
+  return s.empty() ? "none" : s;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::state(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double hlimit)
+{
+  Atom *atom = lmp->atom;
+  st->fetch();
+  const tagint *tag = atom->tag;
+  const int *type = atom->type;
+  double **x = atom->x, **v = atom->v;
+  const double *rmass = st->rmass;
+  tagint bad = 0;
+  std::string msg;
+  auto finite3 = [](const double *a) {
+    return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+  };
+
+  for (int i = 0; i < atom->nlocal; i++) {
+    const tagint t = tag[i];
+    if (bad > 0 && t >= bad) continue;
+    std::string m;
+    const double mi = rmass[i];
+    if (!std::isfinite(mi)) {
+      m = fmt::format("Atom {} has mass {}: not a finite number", t, mi);
+    } else if (mi < 0.0) {
+      m = fmt::format("Atom {} has negative mass {}", t, mi);
+    } else if (!finite3(x[i])) {
+      m = fmt::format("Atom {} has position ({} {} {}): not finite", t, x[i][0], x[i][1], x[i][2]);
+    } else if (!finite3(v[i])) {
+      m = fmt::format("Atom {} has velocity ({} {} {}): not finite (velocity create divides by "
+                      "the zero mass of boundary particles: apply it to the real particles only)",
+                      t, v[i][0], v[i][1], v[i][2]);
+    } else if (mi == 0.0) {
+      // boundary particle
+      const double *n = st->n[i];
+      const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+      if (!(n2 >= 0.25))
+        m = fmt::format("Atom {} has zero mass but no boundary normal: zero-mass particles must "
+                        "be boundary particles of fix esph/boundary",
+                        t);
+      else if (fabs(n2 - 1.0) > UNIT_TOL)
+        m = fmt::format("Boundary particle {} has a normal of length {}, not a unit normal", t,
+                        sqrt(n2));
+    } else {
+      const double rho = st->rho[i], h = st->h[i], e = st->e[i];
+      const double *s = st->s[i];
+      if (!(rho > 0.0) || !std::isfinite(rho)) {
+        m = fmt::format("Atom {} has density d_esph_rho = {}: it must be > 0 and finite", t, rho);
+      } else if (!(h > 0.0) || !std::isfinite(h)) {
+        m = fmt::format("Atom {} has smoothing length d_esph_h = {}: it must be > 0 and finite", t,
+                        h);
+      } else if (h > hlimit * (1.0 + 1.0e-12)) {
+        m = fmt::format("Atom {} has smoothing length {} larger than the pair esph/solid cutoff "
+                        "allows ({}): increase hvar",
+                        t, h, hlimit);
+      } else if (!std::isfinite(e)) {
+        m = fmt::format("Atom {} has internal energy d_esph_e = {}: not finite", t, e);
+      } else {
+        for (int k = 0; k < 6 && m.empty(); k++)
+          if (!std::isfinite(s[k]))
+            m = fmt::format("Atom {} has stress d2_esph_s[{}] = {}: not finite", t, k + 1, s[k]);
+        if (m.empty() && st->epsp && (!(st->epsp[i] >= 0.0) || !std::isfinite(st->epsp[i])))
+          m = fmt::format("Atom {} has plastic strain d_esph_epsp = {}: it must be >= 0 and "
+                          "finite",
+                          t, st->epsp[i]);
+        if (m.empty()) {
+          double P, c2;
+          eos[type[i]].compute(rho, e, P, c2);
+          if (!std::isfinite(P) || !(c2 > 0.0) || !std::isfinite(c2))
+            m = fmt::format("Atom {} (type {}) has no sound speed: its EOS gives P = {} and c^2 = "
+                            "{} at density {} and energy {}; the state is outside the EOS",
+                            t, type[i], P, c2, rho, e);
+        }
+      }
+    }
+    if (!m.empty()) {
+      bad = (t > 0) ? t : 1;
+      msg = m;
+    }
+  }
+  first_error(lmp, bad, msg);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::pairs(LAMMPS *lmp, ESPHState *st, NeighList *list, double cutsq, double h0,
+                      int kdim)
+{
+  double **x = lmp->atom->x;
+  const tagint *tag = lmp->atom->tag;
+  const double *rmass = st->rmass;
+  const int boxdim = lmp->domain->dimension;
+  const double rmin = COINCIDENT * h0, offmax = OFF_DIMENSION * h0;
+  tagint bad = 0;
+  std::string msg;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(rmass[i] > 0.0)) continue;
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(rmass[j] > 0.0)) continue;
+      const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq) continue;
+      const tagint t = MIN(tag[i], tag[j]) > 0 ? MIN(tag[i], tag[j]) : 1;
+      if (bad > 0 && t >= bad) continue;
+      if (rsq < rmin * rmin) {
+        bad = t;
+        msg = fmt::format("Atoms {} and {} are at the same position ({} {} {}, distance {}): "
+                          "coincident particles make the SPH sums singular; delete one of them",
+                          MIN(tag[i], tag[j]), MAX(tag[i], tag[j]), x[i][0], x[i][1], x[i][2],
+                          sqrt(rsq));
+        continue;
+      }
+      for (int d = kdim; d < boxdim; d++)
+        if (fabs(dx[d]) > offmax) {
+          bad = t;
+          msg = fmt::format("Pair esph/solid dimension {}: neighbouring atoms {} and {} are {:.6g} "
+                            "apart in {}, but a {}D kernel needs the bodies on {}; use dimension "
+                            "{} for bodies that extend in {}",
+                            kdim, MIN(tag[i], tag[j]), MAX(tag[i], tag[j]), fabs(dx[d]), "xyz"[d],
+                            kdim, kdim == 1 ? "a line along x" : "the xy plane", boxdim, "xyz"[d]);
+          break;
+        }
+    }
+  }
+  first_error(lmp, bad, msg);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::contact_bodies(LAMMPS *lmp, ESPHState *st, const char *rule)
+{
+  st->fetch();
+  std::vector<int> real, bnd;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    if (st->rmass[i] > 0.0)
+      real.push_back(st->body[i]);
+    else
+      bnd.push_back(st->body[i]);
+  }
+  real = global_set(lmp, real);
+  if (real.size() < 2) return;
+  bnd = global_set(lmp, bnd);
+  std::string have;
+  for (int b : bnd) have += fmt::format("{}{}", have.empty() ? "" : " ", b);
+  for (int b : real)
+    if (!std::binary_search(bnd.begin(), bnd.end(), b))
+      lmp->error->all(FLERR, Error::NOLASTLINE,
+                      "Pair esph/solid contact {}: body {} has real particles but no boundary "
+                      "particles (bodies with boundary particles: {}); define fix esph/boundary "
+                      "on a group that holds every body, or use contact off",
+                      rule, b, have.empty() ? "none" : have);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::integrators(LAMMPS *lmp, Fix *fix_int, int move)
+{
+  const int *mask = lmp->atom->mask;
+  const int nlocal = lmp->atom->nlocal;
+  int moved = 0;
+  for (const auto &f : lmp->modify->get_fix_list()) {
+    // a second fix esph/integrate has its own error (fix esph/integrate init)
+    if (f == fix_int || !f->time_integrate || utils::strmatch(f->style, "^esph/integrate"))
+      continue;
+    const int both = f->groupbit | fix_int->groupbit;
+    int mine = 0, any;
+    for (int i = 0; i < nlocal && !mine; i++)
+      if ((mask[i] & both) == both) mine = 1;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+    if (any && move)
+      lmp->error->all(FLERR, Error::NOLASTLINE,
+                      "Fix {} (style {}) also integrates the motion of atoms of fix "
+                      "esph/integrate {}: the particles would be moved twice per step; remove fix "
+                      "{}, or use fix esph/integrate ... move no to let it alone move them",
+                      f->id, f->style, fix_int->id, f->id);
+    moved |= any;
+  }
+  if (!move && !moved && lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        "Fix esph/integrate {} has move no but no other fix moves its atoms: "
+                        "the particles stay where they are (use move yes, or add e.g. fix move)",
+                        fix_int->id);
+}
+
+/* ----------------------------------------------------------------------
+   every rank gathers the real group particles once (as fix esph/boundary's
+   generation does) and finds the nearest same-body neighbour of its own in a
+   hash grid of cell size spacing, searched up to MAX_RATIO cells away; the
+   median comes from a global histogram, the same on any number of ranks
+------------------------------------------------------------------------- */
+
+double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double spacing)
+{
+  Atom *atom = lmp->atom;
+  st->fetch();
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  const int nprocs = lmp->comm->nprocs;
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || !(st->rmass[i] > 0.0)) continue;
+    for (int d = 0; d < 3; d++) mine.push_back(atom->x[i][d]);
+    mine.push_back((double) st->body[i]);
+  }
+  int nmine = mine.size();
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  if (total == 0) return -1.0;
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, lmp->world);
+  const int nall = total / 4, first = displs[lmp->comm->me] / 4, nown = nmine / 4;
+
+  auto cell = [spacing](double c) {
+    return (long long) floor(c / spacing);
+  };
+  auto key = [](long long ix, long long iy, long long iz) {
+    const long long off = 1 << 20;
+    return ((ix + off) << 42) | ((iy + off) << 21) | (iz + off);
+  };
+  std::unordered_map<long long, std::vector<int>> grid;
+  for (int k = 0; k < nall; k++)
+    grid[key(cell(all[4 * k]), cell(all[4 * k + 1]), cell(all[4 * k + 2]))].push_back(k);
+
+  const int reach = (int) ceil(MAX_RATIO);
+  const double rmax = MAX_RATIO * spacing;
+  std::vector<bigint> hist(NN_BINS * reach + 1, 0), histall(hist.size());
+  for (int q = 0; q < nown; q++) {
+    const int k = first + q;
+    const double *p = &all[4 * k];
+    const long long cx = cell(p[0]), cy = cell(p[1]), cz = cell(p[2]);
+    double best = rmax * rmax;
+    for (long long a = -reach; a <= reach; a++)
+      for (long long b = -reach; b <= reach; b++)
+        for (long long c = -reach; c <= reach; c++) {
+          auto it = grid.find(key(cx + a, cy + b, cz + c));
+          if (it == grid.end()) continue;
+          for (int l : it->second) {
+            if (l == k || all[4 * l + 3] != p[3]) continue;
+            const double d[3] = {all[4 * l] - p[0], all[4 * l + 1] - p[1], all[4 * l + 2] - p[2]};
+            best = MIN(best, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          }
+        }
+    const int bin = MIN((int) (sqrt(best) / spacing * NN_BINS), (int) hist.size() - 1);
+    hist[bin]++;
+  }
+  MPI_Allreduce(hist.data(), histall.data(), (int) hist.size(), MPI_LMP_BIGINT, MPI_SUM,
+                lmp->world);
+  const bigint n = nall, half = (n + 1) / 2;
+  bigint cum = 0;
+  for (size_t b = 0; b < histall.size(); b++) {
+    cum += histall[b];
+    if (cum >= half) return MIN((b + 0.5) / NN_BINS, MAX_RATIO);
+  }
+  return MAX_RATIO;
+}

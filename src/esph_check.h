@@ -1,0 +1,88 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+// Start-of-run checks of the ESPH input: the per-atom state every real and boundary
+// particle starts a run with, the particle arrangement seen through the neighbour
+// list (coincident particles, particles off the line or plane of a lower kernel
+// dimension), bodies without boundary particles under a contact rule, other
+// time-integrating fixes, and the measured particle spacing against fix
+// esph/boundary's. Each check is one pass at setup or init, nothing per step.
+// Per-atom failures are reported collectively for the atom with the smallest ID, so
+// the message is the same on any number of ranks.
+
+#ifndef LMP_ESPH_CHECK_H
+#define LMP_ESPH_CHECK_H
+
+#include "lmptype.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ESPH {
+struct EOS;
+}
+
+namespace LAMMPS_NS {
+class LAMMPS;
+class ESPHState;
+class Fix;
+class NeighList;
+
+namespace ESPHCheck {
+
+  // collective: every rank passes the ID of its first offending atom (0: none) and
+  // its message; if any rank has one, all ranks stop with the message of the
+  // smallest atom ID
+  void first_error(LAMMPS *lmp, tagint tag, const std::string &msg);
+
+  // union over all ranks of the values in v (sorted, unique)
+  std::vector<int> global_set(LAMMPS *lmp, std::vector<int> v);
+
+  // number of real (mass > 0) particles per body among the atoms in groupbit, all ranks
+  std::map<int, bigint> body_counts(LAMMPS *lmp, ESPHState *state, int groupbit);
+  // "1: 64, 2: 64" (the first few bodies)
+  std::string format_bodies(const std::map<int, bigint> &counts);
+
+  // per-atom state at the start of a run: real particles need finite x, v, e and
+  // stress, density and h > 0 and finite, and a positive sound speed from their EOS;
+  // boundary particles finite x and v and a unit normal; hlimit: the largest h the
+  // cutoff allows
+  void state(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double hlimit);
+
+  // pass over the half neighbour list: coincident real particles (closer than
+  // COINCIDENT x h0), and with a kernel dimension below the box dimension,
+  // neighbouring real particles off the x axis (dimension 1) or the xy plane (2)
+  void pairs(LAMMPS *lmp, ESPHState *state, NeighList *list, double cutsq, double h0, int kdim);
+
+  // with a contact rule and more than one body: every body with real particles
+  // needs boundary particles
+  void contact_bodies(LAMMPS *lmp, ESPHState *state, const char *rule);
+
+  // move yes: no other fix may integrate the motion of atoms of fix esph/integrate;
+  // move no: some other fix should (a warning otherwise)
+  void integrators(LAMMPS *lmp, Fix *fix_int, int move);
+
+  // median distance from each real particle of the group to its nearest real
+  // neighbour of the same body, in units of spacing (all group particles gathered
+  // once; capped at MAX_RATIO); -1 if the group has no real particles
+  double spacing_ratio(LAMMPS *lmp, ESPHState *state, int groupbit, double spacing);
+
+  static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
+  static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
+  static constexpr double MAX_RATIO = 3.0;
+}    // namespace ESPHCheck
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,413 @@
+"""The bad-input suite of ESPH: a valid small base scene and one-change cases against it.
+
+The base scene: two touching iron blocks of 4 x 4 x 4 particles (spacing 0.1 mm, h = 1.3
+spacings), bodies 1 and 2, contact solid with generated boundary particles, block A moving
+at 50 m/s into block B, 20 steps (contact from the first step). Each case changes one
+thing (a line replaced, removed, added or moved) and states its outcome:
+
+  error:WORD    LAMMPS stops with an ERROR whose message contains WORD
+  warning:WORD  the run completes with finite thermo and a WARNING containing WORD
+  same          the run completes without a new warning and its thermo equals the base's
+                (the change is legal and must not change the answer)
+  runs          the run completes without a new warning and with finite thermo (legal
+                input that changes the physics: a different kernel, EOS, option)
+
+Cases with np 2 run on two MPI ranks and must give the same outcome (and, for errors,
+the same message as on one rank: errors are collective).
+
+Operations on the base (by line key): R(key, line) replace, D(key) delete,
+A(key, line) insert after, B(key, line) insert before, M(key, before) move the line
+before another, K(key, text) append text to the line.
+
+What is accepted (legal input that runs) and why:
+  * the ESPH styles in any order the docs allow (fix before pair_style, all fixes first):
+    the same state fixes are made whichever style comes first, the answer is the same
+  * units lj and cgs with SI numbers: no conversion factors, the same numbers
+  * atom styles with per-atom mass (sphere) or without (charge, full): the package adds
+    rmass when missing; boundary particles of another atom type; no atom map
+  * a second fix esph/boundary on the same group: it finds the existing boundary
+    particles and reuses them; velocity set before fix esph/boundary: boundary
+    particles take their body's velocity at setup anyway
+  * options that change the physics (kernel wendland, linear EOS, heat, hvar, artstress,
+    xsph, gradient corrected, contact paper/off, newton off, yield, shear 0): they run
+  * fix esph/integrate move no with fix move: the documented way to prescribe motion
+"""
+
+BASE = [
+    ("units", "units si"),
+    ("atom_style", "atom_style atomic"),
+    ("atom_modify", "atom_modify map array"),
+    ("boundary", "boundary f f f"),
+    ("box", "region box block -0.0006 0.0006 -0.0004 0.0004 -0.0004 0.0004"),
+    ("create_box", "create_box 2 box"),
+    ("lattice", "lattice sc 1e-4 origin 0.5 0.5 0.5"),
+    ("ra", "region ra block -0.0004 0 -0.0002 0.0002 -0.0002 0.0002 units box"),
+    ("rb", "region rb block 0 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box"),
+    ("ca", "create_atoms 1 region ra"),
+    ("cb", "create_atoms 2 region rb"),
+    ("ga", "group a region ra"),
+    ("gb", "group b region rb"),
+    ("pair", "pair_style esph/solid 1.3e-4"),
+    ("coeff", "pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69"),
+    ("fix_int", "fix int all esph/integrate"),
+    ("timestep", "timestep 5e-9"),
+    ("mass", "set group all mass 7.85e-9"),
+    ("body_a", "set group a i_esph_body 1"),
+    ("body_b", "set group b i_esph_body 2"),
+    ("fix_bnd", "fix bnd all esph/boundary spacing 1e-4"),
+    ("velocity", "velocity a set 50 0 0 units box"),
+    ("neighbor", "neighbor 2e-5 bin"),
+    ("ke", "compute ke all ke"),
+    ("thermo_style", "thermo_style custom step c_ke pe f_int[1] f_int[2] f_int[8]"),
+    ("thermo_modify", "thermo_modify format float %.15g"),
+    ("thermo", "thermo 5"),
+    ("run", "run 20"),
+]
+
+
+def R(key, line):
+    return ("R", key, line)
+
+
+def D(key):
+    return ("D", key, None)
+
+
+def A(key, line):
+    return ("A", key, line)
+
+
+def B(key, line):
+    return ("B", key, line)
+
+
+def M(key, before):
+    return ("M", key, before)
+
+
+def K(key, text):
+    return ("K", key, text)
+
+
+PS = "pair_style esph/solid 1.3e-4 "
+PC = "pair_coeff * * rho0 7850 shear 80e9 "
+MG = "eos mie/gruneisen 3574 1.92 1.69"
+FB = "fix bnd all esph/boundary "
+# a site of block A's lattice (cell centres at odd multiples of 0.05 mm)
+SITE = "-0.00005 0.00005 0.00005"
+
+# write a restart file at the end of the base run and read it back (a case adds the rest)
+RESTART = [A("run", "write_restart base.restart"), A("run", "clear"),
+           A("run", "read_restart base.restart")]
+
+# name, change, expected[, np]
+CASES = [
+    # ---------------- pair_style esph/solid ----------------
+    ("ps_h_missing", [R("pair", "pair_style esph/solid")], "error:missing argument"),
+    ("ps_h_negative", [R("pair", "pair_style esph/solid -1.3e-4")], "error:must be > 0"),
+    ("ps_h_zero", [R("pair", "pair_style esph/solid 0")], "error:must be > 0"),
+    ("ps_h_text", [R("pair", "pair_style esph/solid big")], "error:Expected floating point"),
+    ("ps_unknown_keyword", [K("pair", " bogus 1")], "error:keyword: bogus"),
+    ("ps_kernel_missing", [K("pair", " kernel")], "error:missing argument"),
+    ("ps_kernel_unknown", [K("pair", " kernel quintic")], "error:quintic"),
+    ("ps_kernel_wendland", [K("pair", " kernel wendland")], "runs"),
+    ("ps_kernel_cubic", [K("pair", " kernel cubic")], "same"),
+    ("ps_dimension_missing", [K("pair", " dimension")], "error:missing argument"),
+    ("ps_dimension_zero", [K("pair", " dimension 0")], "error:dimension must be 1"),
+    ("ps_dimension_four", [K("pair", " dimension 4")], "error:dimension must be 1"),
+    ("ps_dimension_text", [K("pair", " dimension three")], "error:Expected integer"),
+    ("ps_dimension_1_on_3d", [K("pair", " dimension 1")], "error:a 1D kernel needs"),
+    ("ps_dimension_2_on_3d", [K("pair", " dimension 2")], "error:a 2D kernel needs"),
+    ("ps_dimension_3", [K("pair", " dimension 3")], "same"),
+    ("ps_visc_missing", [K("pair", " visc 1 1")], "error:missing argument"),
+    ("ps_visc_alpha_negative", [K("pair", " visc -1 1 0.1")], "error:must be >= 0"),
+    ("ps_visc_beta_negative", [K("pair", " visc 1 -1 0.1")], "error:must be >= 0"),
+    ("ps_visc_eps_zero", [K("pair", " visc 1 1 0")], "error:epsilon must be > 0"),
+    ("ps_visc_text", [K("pair", " visc one 1 0.1")], "error:Expected floating point"),
+    ("ps_visc_default", [K("pair", " visc 1 1 0.1")], "same"),
+    ("ps_visc_off", [K("pair", " visc 0 0 0.1")], "runs"),
+    ("ps_heat_missing", [K("pair", " heat 0.1")], "error:missing argument"),
+    ("ps_heat_negative", [K("pair", " heat -0.1 1")], "error:must be >= 0"),
+    ("ps_heat_on", [K("pair", " heat 0.1 1.0")], "runs"),
+    ("ps_hvar_missing", [K("pair", " hvar")], "error:missing argument"),
+    ("ps_hvar_below_one", [K("pair", " hvar 0.5")], "error:(>= 1)"),
+    ("ps_hvar_text", [K("pair", " hvar x")], "error:Expected floating point"),
+    ("ps_hvar_on", [K("pair", " hvar 1.5")], "runs"),
+    ("ps_contact_missing", [K("pair", " contact")], "error:missing argument"),
+    ("ps_contact_unknown", [K("pair", " contact maybe")], "error:maybe"),
+    ("ps_contact_solid", [K("pair", " contact solid")], "same"),
+    ("ps_contact_paper", [K("pair", " contact paper")], "runs"),
+    ("ps_contact_off_no_boundary", [K("pair", " contact off"), D("fix_bnd")], "runs"),
+    ("ps_gradient_unknown", [K("pair", " gradient smooth")], "error:smooth"),
+    ("ps_gradient_corrected", [K("pair", " gradient corrected")], "runs"),
+    ("ps_gradient_plain", [K("pair", " gradient plain")], "same"),
+    ("ps_artstress_missing", [K("pair", " artstress 0.3 4")], "error:missing argument"),
+    ("ps_artstress_negative", [K("pair", " artstress -0.3 4 1e-4")], "error:epsilon must be >= 0"),
+    ("ps_artstress_n_zero", [K("pair", " artstress 0.3 0 1e-4")], "error:n must be >= 1"),
+    ("ps_artstress_n_text", [K("pair", " artstress 0.3 four 1e-4")], "error:Expected integer"),
+    ("ps_artstress_dp_zero", [K("pair", " artstress 0.3 4 0")], "error:dp must be > 0"),
+    ("ps_artstress_dp_too_big", [K("pair", " artstress 0.3 4 3e-4")], "error:below the kernel"),
+    ("ps_artstress_on", [K("pair", " artstress 0.3 4 1e-4")], "runs"),
+    ("ps_artstress_zero_is_off", [K("pair", " artstress 0 4 1e-4")], "same"),
+    ("ps_xsph_missing", [K("pair", " xsph")], "error:missing argument"),
+    ("ps_xsph_above_one", [K("pair", " xsph 1.5")], "error:[0, 1]"),
+    ("ps_xsph_negative", [K("pair", " xsph -0.5")], "error:[0, 1]"),
+    ("ps_xsph_on", [K("pair", " xsph 0.5")], "runs"),
+    ("ps_gaptol_missing", [K("pair", " gap/tol")], "error:missing argument"),
+    ("ps_gaptol_negative", [K("pair", " gap/tol -1")], "error:gap/tol must be >= 0"),
+    ("ps_gaptol_text", [K("pair", " gap/tol tiny")], "error:Expected floating point"),
+    ("ps_gaptol_default", [K("pair", " gap/tol 1e-3")], "same"),
+    # ---------------- pair_coeff ----------------
+    ("pc_missing", [D("coeff")], "error:coeffs are not set"),
+    ("pc_one_type_only", [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 " + MG)],
+     "error:coeffs are not set"),
+    ("pc_cross_types", [R("coeff", "pair_coeff 1 2 rho0 7850 shear 80e9 " + MG)],
+     "error:per atom type"),
+    ("pc_type_out_of_range", [R("coeff", "pair_coeff 3 3 rho0 7850 shear 80e9 " + MG)],
+     "error:out of bounds"),
+    ("pc_no_keywords", [R("coeff", "pair_coeff * *")], "error:missing the rho0"),
+    ("pc_rho0_missing", [R("coeff", "pair_coeff * * shear 80e9 " + MG)], "error:missing the rho0"),
+    ("pc_rho0_negative", [R("coeff", "pair_coeff * * rho0 -7850 shear 80e9 " + MG)],
+     "error:rho0 must be > 0"),
+    ("pc_rho0_zero", [R("coeff", "pair_coeff * * rho0 0 shear 80e9 " + MG)],
+     "error:rho0 must be > 0"),
+    ("pc_rho0_text", [R("coeff", "pair_coeff * * rho0 iron shear 80e9 " + MG)],
+     "error:Expected floating point"),
+    ("pc_rho0_no_value", [R("coeff", "pair_coeff * * shear 80e9 " + MG + " rho0")],
+     "error:missing argument"),
+    ("pc_shear_missing", [R("coeff", "pair_coeff * * rho0 7850 " + MG)], "error:missing the shear"),
+    ("pc_shear_negative", [R("coeff", "pair_coeff * * rho0 7850 shear -80e9 " + MG)],
+     "error:shear modulus must be >= 0"),
+    ("pc_shear_zero", [R("coeff", "pair_coeff * * rho0 7850 shear 0 " + MG)], "runs"),
+    ("pc_eos_missing", [R("coeff", PC)], "error:missing the eos"),
+    ("pc_eos_unknown", [R("coeff", PC + "eos tillotson 1")], "error:tillotson"),
+    ("pc_eos_no_name", [R("coeff", PC + "eos")], "error:missing argument"),
+    ("pc_linear_missing_K", [R("coeff", PC + "eos linear")], "error:missing argument"),
+    ("pc_linear_K_zero", [R("coeff", PC + "eos linear 0")], "error:bulk modulus must be > 0"),
+    ("pc_linear_K_text", [R("coeff", PC + "eos linear stiff")], "error:Expected floating point"),
+    ("pc_linear", [R("coeff", PC + "eos linear 1.0e11")], "runs"),
+    ("pc_mg_missing", [R("coeff", PC + "eos mie/gruneisen 3574 1.92")], "error:missing argument"),
+    ("pc_mg_c0_negative", [R("coeff", PC + "eos mie/gruneisen -3574 1.92 1.69")],
+     "error:c0 must be > 0"),
+    ("pc_mg_s_negative", [R("coeff", PC + "eos mie/gruneisen 3574 -1.92 1.69")],
+     "error:s must be >= 0"),
+    ("pc_mg_gamma_negative", [R("coeff", PC + "eos mie/gruneisen 3574 1.92 -1.69")],
+     "error:gamma0 must be >= 0"),
+    ("pc_yield_negative", [K("coeff", " yield -1")], "error:yield stress must be >= 0"),
+    ("pc_yield_on", [K("coeff", " yield 2e8")], "runs"),
+    ("pc_yield_zero_is_elastic", [K("coeff", " yield 0")], "same"),
+    ("pc_hardening_without_yield", [K("coeff", " hardening 1e9")], "error:needs a yield stress"),
+    ("pc_hardening_negative", [K("coeff", " yield 2e8 hardening -1")],
+     "error:hardening modulus must be >= 0"),
+    ("pc_unknown_keyword", [K("coeff", " young 200e9")], "error:keyword: young"),
+    ("pc_before_pair_style", [M("coeff", "pair")], "error:Pair_coeff command without a pair style"),
+    # ---------------- fix esph/integrate ----------------
+    ("fi_unknown_keyword", [K("fix_int", " nve")], "error:Unknown fix esph/integrate keyword"),
+    ("fi_cfl_missing", [K("fix_int", " cfl")], "error:missing argument"),
+    ("fi_cfl_zero", [K("fix_int", " cfl 0")], "error:must be in (0,1]"),
+    ("fi_cfl_above_one", [K("fix_int", " cfl 2")], "error:must be in (0,1]"),
+    ("fi_cfl_text", [K("fix_int", " cfl fast")], "error:Expected floating point"),
+    ("fi_cfl_on", [K("fix_int", " cfl 0.3")], "runs"),
+    ("fi_dtmax_without_cfl", [K("fix_int", " dtmax 1e-9")], "error:need the cfl keyword"),
+    ("fi_dtmax_negative", [K("fix_int", " cfl 0.3 dtmax -1e-9")], "error:dtmax must be > 0"),
+    ("fi_dtmin_negative", [K("fix_int", " cfl 0.3 dtmin -1e-9")], "error:dtmin must be > 0"),
+    ("fi_dtmin_above_dtmax", [K("fix_int", " cfl 0.3 dtmin 1e-8 dtmax 1e-9")],
+     "error:larger than dtmax"),
+    ("fi_move_text", [K("fix_int", " move maybe")], "error:Expected boolean"),
+    ("fi_move_no_alone", [K("fix_int", " move no")], "warning:move no"),
+    ("fi_move_no_with_fix_move",
+     [K("fix_int", " move no"), A("fix_bnd", "fix mv all move linear 0 0 0")], "runs"),
+    ("fi_twice", [A("fix_int", "fix int2 all esph/integrate")], "error:Only one fix esph/integrate"),
+    ("fi_group_unknown", [R("fix_int", "fix int nobody esph/integrate")],
+     "error:Could not find fix group ID"),
+    ("fi_missing", [D("fix_int"), R("thermo_style", "thermo_style custom step c_ke pe")],
+     "error:requires fix esph/integrate"),
+    ("fi_with_fix_nve", [A("fix_bnd", "fix nve all nve")], "error:also integrates"),
+    ("fi_with_fix_nve_limit", [A("fix_bnd", "fix lim a nve/limit 1e-6")], "error:also integrates"),
+    ("fi_with_fix_nve_first", [B("fix_int", "fix nve b nve")], "error:also integrates"),
+    # ---------------- fix esph/boundary ----------------
+    ("fb_no_spacing", [R("fix_bnd", "fix bnd all esph/boundary")],
+     "error:needs the particle spacing"),
+    ("fb_spacing_missing", [R("fix_bnd", FB + "spacing")], "error:missing argument"),
+    ("fb_spacing_negative", [R("fix_bnd", FB + "spacing -1e-4")], "error:spacing must be > 0"),
+    ("fb_spacing_zero", [R("fix_bnd", FB + "spacing 0")], "error:spacing must be > 0"),
+    ("fb_spacing_text", [R("fix_bnd", FB + "spacing fine")], "error:Expected floating point"),
+    ("fb_spacing_double", [R("fix_bnd", FB + "spacing 2e-4")], "error:set spacing to the"),
+    ("fb_spacing_half", [R("fix_bnd", FB + "spacing 5e-5")], "error:set spacing to the"),
+    ("fb_spacing_20pct_off", [R("fix_bnd", FB + "spacing 1.2e-4")], "warning:median nearest"),
+    ("fb_spacing_5pct_off", [R("fix_bnd", FB + "spacing 1.05e-4")], "runs"),
+    ("fb_type_invalid", [K("fix_bnd", " type 7")], "error:not a valid atom type"),
+    ("fb_type_zero", [K("fix_bnd", " type 0")], "error:not a valid atom type"),
+    ("fb_type_text", [K("fix_bnd", " type steel")], "error:type"),
+    ("fb_type_2", [K("fix_bnd", " type 2")], "same"),
+    ("fb_smooth_below", [K("fix_bnd", " smooth 0.5")], "error:smooth must be in [1,3]"),
+    ("fb_smooth_above", [K("fix_bnd", " smooth 4")], "error:smooth must be in [1,3]"),
+    ("fb_smooth_text", [K("fix_bnd", " smooth wide")], "error:Expected floating point"),
+    ("fb_smooth_2", [K("fix_bnd", " smooth 2")], "runs"),
+    ("fb_smooth_1", [K("fix_bnd", " smooth 1")], "same"),
+    ("fb_unknown_keyword", [K("fix_bnd", " normals out")], "error:Unknown fix esph/boundary keyword"),
+    ("fb_missing", [D("fix_bnd")], "error:requires fix esph/boundary"),
+    ("fb_given_without_particles", [R("fix_bnd", "fix bnd all esph/boundary given")],
+     "error:has no boundary particles"),
+    ("fb_group_one_body", [R("fix_bnd", "fix bnd a esph/boundary spacing 1e-4")],
+     "error:body 2 has real particles but no boundary particles"),
+    ("fb_twice", [A("fix_bnd", "fix bnd2 all esph/boundary spacing 1e-4")], "same"),
+    ("fb_group_unknown", [R("fix_bnd", "fix bnd nobody esph/boundary spacing 1e-4")],
+     "error:Could not find fix group ID"),
+    ("fb_box_too_small",
+     [R("box", "region box block -0.0004 0.0004 -0.0002 0.0002 -0.0002 0.0002")],
+     "error:outside the non-periodic box"),
+    # ---------------- command order ----------------
+    ("ord_fix_before_pair", [M("fix_int", "pair")], "same"),
+    ("ord_fixes_before_pair",
+     [M("fix_int", "pair"), M("timestep", "pair"), M("mass", "pair"), M("body_a", "pair"),
+      M("body_b", "pair"), M("fix_bnd", "pair")], "same"),
+    ("ord_pair_after_run_setup",
+     [M("pair", "neighbor"), M("coeff", "neighbor")], "same"),
+    ("ord_boundary_before_masses", [M("fix_bnd", "mass")], "error:have zero mass"),
+    ("ord_boundary_before_bodies", [M("fix_bnd", "body_a")],
+     "error:generated its boundary particles"),
+    ("ord_boundary_between_bodies", [M("fix_bnd", "body_b")],
+     "error:generated its boundary particles"),
+    ("ord_mass_before_any_esph_style", [M("mass", "pair")], "error:Cannot set attribute mass"),
+    ("ord_body_before_any_esph_style", [M("body_a", "pair")], "error:i_esph_body"),
+    # one body with atom_style sphere (masses exist before any ESPH style): the boundary
+    # fix may then be the first ESPH style
+    ("ord_boundary_first_sphere",
+     [R("atom_style", "atom_style sphere"), D("body_a"), D("body_b"), M("mass", "pair"),
+      M("fix_bnd", "pair")], "runs"),
+    ("ord_atoms_after_boundary",
+     [A("fix_bnd", "create_atoms 1 single 0.0003 0.0003 0.0003 units box"),
+      A("fix_bnd", "set atom 241 mass 7.85e-9")],
+     "error:generated its boundary particles"),
+    ("ord_mass_after_boundary", [A("fix_bnd", "set group b mass 1.57e-8")],
+     "error:generated its boundary particles"),
+    ("ord_velocity_before_boundary", [M("velocity", "fix_bnd")], "same"),
+    ("ord_no_pair_style", [D("pair"), D("coeff")], "error:requires pair style esph/solid"),
+    ("ord_other_pair_style", [R("pair", "pair_style zero 2.6e-4"), R("coeff", "pair_coeff * *")],
+     "error:requires pair style esph/solid"),
+    ("ord_no_bodies_contact", [D("body_a"), D("body_b")], "runs"),
+    # after read_restart the pair style and the fixes are defined again, in any order
+    ("rs_fixes_without_pair", RESTART + [A("run", "fix int all esph/integrate"),
+                                         A("run", FB + "spacing 1e-4"), A("run", "run 5")],
+     "error:re-specify non-restarted pair style (esph/solid)"),
+    ("rs_fixes_other_pair", RESTART + [A("run", "fix int all esph/integrate"),
+                                       A("run", FB + "spacing 1e-4"),
+                                       A("run", "pair_style zero 2.6e-4"),
+                                       A("run", "pair_coeff * *"), A("run", "run 5")],
+     "error:requires pair style esph/solid"),
+    ("rs_boundary_without_pair", RESTART + [A("run", FB + "spacing 1e-4"), A("run", "run 5")],
+     "error:re-specify non-restarted pair style (esph/solid)"),
+    ("rs_fixes_first", RESTART + [A("run", "fix int all esph/integrate"),
+                                  A("run", FB + "spacing 1e-4"),
+                                  A("run", "pair_style esph/solid 1.3e-4"),
+                                  A("run", PC + MG), A("run", "neighbor 2e-5 bin"),
+                                  A("run", "run 5")], "runs"),
+    # ---------------- hostile per-atom state ----------------
+    ("st_density_negative", [A("fix_bnd", "set group a d_esph_rho -7850")],
+     "error:d_esph_rho = -7850"),
+    ("st_density_inf", [A("fix_bnd", "variable big atom 1e308*10"),
+                        A("fix_bnd", "set atom 3 d_esph_rho v_big")], "error:d_esph_rho = inf"),
+    ("st_h_negative", [A("fix_bnd", "set group all d_esph_h -1e-4")],
+     "error:d_esph_h = -0.0001"),
+    ("st_h_huge", [A("fix_bnd", "set group all d_esph_h 1.0")], "error:increase hvar"),
+    ("st_energy_inf", [A("fix_bnd", "variable big atom 1e308*10"),
+                       A("fix_bnd", "set atom 7 d_esph_e v_big")], "error:d_esph_e = inf"),
+    ("st_energy_very_negative", [A("fix_bnd", "set atom 9 d_esph_e -1e9")],
+     "error:no sound speed"),
+    ("st_density_beyond_eos", [A("fix_bnd", "set atom 9 d_esph_rho 20000")],
+     "error:no sound speed"),
+    ("st_stress_inf", [A("fix_bnd", "variable big atom 1e308*10"),
+                       A("fix_bnd", "set atom 11 d2_esph_s[4] v_big")],
+     "error:d2_esph_s[4] = inf"),
+    ("st_velocity_create", [R("velocity", "velocity all create 300 4928459")],
+     "error:apply it to the real particles"),
+    ("st_velocity_inf", [A("fix_bnd", "variable big atom 1e308*10"),
+                         R("velocity", "velocity a set v_big 0 0 units box")],
+     "error:velocity (inf"),
+    ("st_mass_zero_variable",
+     [A("fix_bnd", "variable zero atom 0.0"), A("fix_bnd", "set atom 5 mass v_zero")],
+     "error:generated its boundary particles"),
+    ("st_mass_zero_before_boundary",
+     [A("mass", "variable zero atom 0.0"), A("mass", "set atom 5 mass v_zero")],
+     "error:atom 5 in group all has zero mass but no normal"),
+    ("st_mass_zero_no_boundary_fix",
+     [K("pair", " contact off"), D("fix_bnd"), A("mass", "variable zero atom 0.0"),
+      A("mass", "set atom 5 mass v_zero")], "error:Atom 5 has zero mass but no boundary normal"),
+    ("st_mass_negative",
+     [A("mass", "variable neg atom -1.0"), A("mass", "set atom 5 mass v_neg")],
+     "error:Invalid mass"),
+    ("st_normal_not_unit", [A("fix_bnd", "set group all d2_esph_n[1] 0.5")],
+     "error:not a unit normal"),
+    ("st_coincident", [A("cb", "create_atoms 1 single " + SITE + " units box")],
+     "error:same position"),
+    ("st_plastic_strain_negative",
+     [K("coeff", " yield 2e8"), A("fix_bnd", "set group a d_esph_epsp -0.1")],
+     "error:d_esph_epsp = -0.1"),
+    ("st_state_set_by_hand", [B("pair", "fix mine all property/atom d_esph_rho")],
+     "error:must not be defined by hand"),
+    # ---------------- units, dimension, atom style, boundary ----------------
+    ("un_metal", [R("units", "units metal")], "error:not units metal"),
+    ("un_real", [R("units", "units real")], "error:not units real"),
+    ("un_lj", [R("units", "units lj"), R("lattice", "lattice sc 1e12 origin 0.5 0.5 0.5")],
+     "runs"),
+    ("un_cgs", [R("units", "units cgs")], "same"),
+    ("un_nano", [R("units", "units nano")], "same"),
+    ("dim_2d_with_3d_box", [B("boundary", "dimension 2")], "error:2d"),
+    ("as_sphere", [R("atom_style", "atom_style sphere")], "same"),
+    ("as_charge", [R("atom_style", "atom_style charge")], "same"),
+    ("as_ellipsoid", [R("atom_style", "atom_style ellipsoid")], "same"),
+    ("am_no_map", [D("atom_modify")], "same"),
+    ("newton_off", [B("box", "newton off")], "runs"),
+    ("newton_off_after_box", [B("pair", "newton off")], "error:Newton bond change"),
+    ("bc_periodic", [R("boundary", "boundary p p p")], "same"),
+    # ---------------- the same errors on two MPI ranks ----------------
+    ("mpi_coincident", [A("cb", "create_atoms 1 single " + SITE + " units box")],
+     "error:same position", 2),
+    ("mpi_density_negative", [A("fix_bnd", "set group b d_esph_rho -7850")],
+     "error:d_esph_rho = -7850", 2),
+    ("mpi_velocity_create", [R("velocity", "velocity all create 300 4928459")],
+     "error:apply it to the real particles", 2),
+    ("mpi_boundary_before_bodies", [M("fix_bnd", "body_a")],
+     "error:generated its boundary particles", 2),
+    ("mpi_group_one_body", [R("fix_bnd", "fix bnd a esph/boundary spacing 1e-4")],
+     "error:body 2 has real particles but no boundary particles", 2),
+    ("mpi_spacing_double", [R("fix_bnd", FB + "spacing 2e-4")], "error:set spacing to the", 2),
+    ("mpi_fix_nve", [A("fix_bnd", "fix nve all nve")], "error:also integrates", 2),
+    ("mpi_dimension_1", [K("pair", " dimension 1")], "error:a 1D kernel needs", 2),
+    ("mpi_fix_before_pair", [M("fix_int", "pair")], "runs", 2),
+]
+
+
+def build(ops):
+    """the base input with the operations applied, as text"""
+    lines = [list(kv) for kv in BASE]
+
+    def find(key):
+        for k, (name, _) in enumerate(lines):
+            if name == key:
+                return k
+        raise KeyError(key)
+
+    for op, key, arg in ops:
+        k = find(key)
+        if op == "R":
+            lines[k][1] = arg
+        elif op == "D":
+            del lines[k]
+        elif op == "A":
+            # after the line and after lines inserted after it before (keeps their order)
+            k += 1
+            while k < len(lines) and lines[k][0].startswith(key + "+"):
+                k += 1
+            lines.insert(k, [key + "+", arg])
+        elif op == "B":
+            lines.insert(k, [key + "-", arg])
+        elif op == "M":
+            line = lines.pop(k)
+            lines.insert(find(arg), line)
+        elif op == "K":
+            lines[k][1] += arg
+        else:
+            raise ValueError(op)
+    return "\n".join(line for _, line in lines) + "\n"
