@@ -270,16 +270,17 @@ TEST(Contact, NormalGapWeight)
   EXPECT_EQ(contact_gap_pair(0.3, -0.1), -0.1);
   EXPECT_EQ(contact_gap_pair(GAP_NONE, 0.2), 0.2);
   EXPECT_EQ(contact_gap_pair(GAP_NONE, GAP_NONE), GAP_NONE);
-  // the weight: 1 closed, 0 open beyond the band, C1 smooth in between
+  // the weight: 0 while the gap is open, 1 beyond the band of overlap, C1 in between
+  EXPECT_EQ(contact_weight(0.5, 0.05), 0.0);
+  EXPECT_EQ(contact_weight(0.0, 0.05), 0.0);
+  EXPECT_EQ(contact_weight(-0.05, 0.05), 1.0);
   EXPECT_EQ(contact_weight(-0.5, 0.05), 1.0);
-  EXPECT_EQ(contact_weight(0.0, 0.05), 1.0);
-  EXPECT_EQ(contact_weight(0.05, 0.05), 0.0);
   EXPECT_EQ(contact_weight(GAP_NONE, 0.05), 0.0);
-  EXPECT_DOUBLE_EQ(contact_weight(0.025, 0.05), 0.5);
+  EXPECT_DOUBLE_EQ(contact_weight(-0.025, 0.05), 0.5);
   const double e = 1e-7;
   // one-sided slopes vanish at both ends (the mean slope over the band is 1 / 0.05 = 20)
-  EXPECT_NEAR((contact_weight(e, 0.05) - 1.0) / e, 0.0, 1e-3);
-  EXPECT_NEAR(contact_weight(0.05 - e, 0.05) / e, 0.0, 1e-3);
+  EXPECT_NEAR(contact_weight(-e, 0.05) / e, 0.0, 1e-3);
+  EXPECT_NEAR((1.0 - contact_weight(-0.05 + e, 0.05)) / e, 0.0, 1e-3);
   // paper rule: approaching along nc
   EXPECT_TRUE(contact_approach(+1.0, -1.0));
   EXPECT_FALSE(contact_approach(-1.0, -1.0));
