@@ -486,13 +486,19 @@ double PairESPHSolid::init_one(int i, int j)
 }
 
 /* ----------------------------------------------------------------------
-   called at the start of each run: no prediction, fill unset density and h
+   called at the start of each run (not with run pre no), fill unset density
+   and h. A run that continues the previous one, with nothing changed in
+   between, re-evaluates the last force computation: at the state the
+   integrator predicted for the end of the last step, with the normals that
+   computation used, so the run goes on as if it had not been interrupted.
+   Otherwise the rates are evaluated at the current state and the normals
+   are computed afresh from the boundary particles.
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::setup()
 {
-  pred_valid = 0;
-  normals_valid = 0;
+  pred_valid = fix_int->resume_check();
+  normals_valid = pred_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -1122,7 +1128,8 @@ void PairESPHSolid::finalize(int eflag)
         for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
-      if (bnd) store_normal(i);
+      // the step after this computation uses its normals (see FixESPHIntegrate)
+      if (bnd) store_normal(i, fix_int->pred[i] + FixESPHIntegrate::P_NEXT);
       if (eflag) {
         const double ei = rmass[i] * q[Q_E];
         esum += ei;
@@ -1176,22 +1183,21 @@ void PairESPHSolid::finalize(int eflag)
 }
 
 /* ----------------------------------------------------------------------
-   normal and depth of real particle i from its sums; the length of the
-   normal is kept as the coherence |sum n_k W| / sum W <= 1
+   normal (out[0..2]) and depth (out[3]) of real particle i from its sums;
+   the length of the normal is kept as the coherence |sum n_k W| / sum W <= 1
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::store_normal(int i)
+void PairESPHSolid::store_normal(int i, double *out)
 {
   const double *a = acc[i];
   const double n2 =
       a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
   if (n2 > 0.0 && a[A_WSUM] > 0.0) {
     const double inv = 1.0 / a[A_WSUM];
-    for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
-    state->depth[i] = a[A_DSUM] * inv;
+    for (int d = 0; d < 3; d++) out[d] = a[A_NSUM + d] * inv;
+    out[3] = a[A_DSUM] * inv;
   } else {
-    state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
-    state->depth[i] = 0.0;
+    out[0] = out[1] = out[2] = out[3] = 0.0;
   }
 }
 
@@ -1248,9 +1254,12 @@ void PairESPHSolid::compute_normals()
     comm_stage = COMM_NORMALS;
     comm->reverse_comm(this, 5);
   }
+  double out[4];
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) continue;
-    store_normal(i);
+    store_normal(i, out);
+    for (int d = 0; d < 3; d++) state->n[i][d] = out[d];
+    state->depth[i] = out[3];
   }
   normals_valid = 1;
 }
