@@ -219,20 +219,9 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
   double *epsp = state->epsp;
   double **xs = pair->xsph_flag ? pair->xsph : nullptr;
-  double *depth = state->depth;
-  const int bnd = (pair->nboundary > 0);
 
   for (int i = 0; i < nlocal; i++) {
     double *p = pred[i];
-    // the real-particle normals of the last force computation serve this step; they were
-    // kept apart until now so that a re-evaluation of that computation at the start of a
-    // run (see resume_check()) sees the normals it used
-    if (bnd && rmass[i] > 0.0) {
-      n[i][0] = p[P_NEXT];
-      n[i][1] = p[P_NEXT + 1];
-      n[i][2] = p[P_NEXT + 2];
-      depth[i] = p[P_NEXT + 3];
-    }
     if (i < nint && (mask[i] & groupbit)) {
       if (rmass[i] > 0.0) {
         if (move) {
@@ -373,9 +362,26 @@ void FixESPHIntegrate::final_integrate()
 void FixESPHIntegrate::post_run()
 {
   state->fetch();
-  for (int i = 0; i < atom->nlocal; i++) pred[i][P_HASH] = fingerprint(i);
+  for (int i = 0; i < atom->nlocal; i++) {
+    save_normal_used(i, pred[i] + P_USED);
+    pred[i][P_HASH] = fingerprint(i);
+  }
   fp_natoms = atom->natoms;
   fp_step = update->ntimestep;
+}
+
+/* ----------------------------------------------------------------------
+   the normal and depth of real particle i that the last force computation
+   used: the stored normals are the ones it found, which the next step uses
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::save_normal_used(int i, double *out)
+{
+  const double *nu = pair->normal_used(i);
+  if (state->rmass[i] > 0.0 && nu)
+    for (int k = 0; k < 4; k++) out[k] = nu[k];
+  else
+    for (int k = 0; k < 4; k++) out[k] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -401,8 +407,18 @@ int FixESPHIntegrate::resume_check()
   int all;
   MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, world);
   // a fresh start: the prediction is stale until a step is completed
-  if (!all) havepred = 0;
-  return all;
+  if (!all) {
+    havepred = 0;
+    return 0;
+  }
+  // the re-evaluation uses the normals the last computation used; it stores the ones it
+  // finds, as that computation did
+  for (int i = 0; i < atom->nlocal; i++)
+    if (state->rmass[i] > 0.0) {
+      for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
+      state->depth[i] = pred[i][P_USED + 3];
+    }
+  return 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -620,6 +636,7 @@ int FixESPHIntegrate::pack_restart(int i, double *buf)
   for (int k = 0; k < NPRED; k++) buf[k + 1] = pred[i][k];
   if (update->whichflag == 1 && update->ntimestep != fp_step) {
     state->fetch();
+    save_normal_used(i, buf + P_USED + 1);
     buf[P_HASH + 1] = fingerprint(i);
   }
   return NPRED + 1;

@@ -55,10 +55,10 @@ class FixESPHIntegrate : public Fix {
 
   // per atom, migrating with the atoms (exchange, sorting) and in restart files:
   // the predicted end-of-step state, made in initial_integrate and read by the pair during
-  // the force computation; the real-particle normal and depth of the last force
-  // computation (P_NEXT, P_NEXT+3), which the next step uses; the fingerprint of the
-  // atom's state when the prediction was last known to belong to it (P_HASH)
-  static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_NEXT = 13,
+  // the force computation; at the end of a run (and in restart files) the real-particle
+  // normal and depth that the last force computation used (P_USED .. P_USED + 3) and the
+  // fingerprint of the atom's state (P_HASH)
+  static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
                        P_HASH = 17, NPRED = 18;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
@@ -82,6 +82,7 @@ class FixESPHIntegrate : public Fix {
 
   void adapt_dt();
   double fingerprint(int);
+  void save_normal_used(int, double *);
 };
 
 }    // namespace LAMMPS_NS

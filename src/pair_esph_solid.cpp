@@ -490,9 +490,10 @@ double PairESPHSolid::init_one(int i, int j)
    and h. A run that continues the previous one, with nothing changed in
    between, re-evaluates the last force computation: at the state the
    integrator predicted for the end of the last step, with the normals that
-   computation used, so the run goes on as if it had not been interrupted.
-   Otherwise the rates are evaluated at the current state and the normals
-   are computed afresh from the boundary particles.
+   computation used (restored by the integrator), so the run goes on as if
+   it had not been interrupted. Otherwise the rates are evaluated at the
+   current state and the normals are computed afresh from the boundary
+   particles.
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::setup()
@@ -1128,8 +1129,7 @@ void PairESPHSolid::finalize(int eflag)
         for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
-      // the step after this computation uses its normals (see FixESPHIntegrate)
-      if (bnd) store_normal(i, fix_int->pred[i] + FixESPHIntegrate::P_NEXT);
+      if (bnd) store_normal(i);
       if (eflag) {
         const double ei = rmass[i] * q[Q_E];
         esum += ei;
@@ -1183,21 +1183,22 @@ void PairESPHSolid::finalize(int eflag)
 }
 
 /* ----------------------------------------------------------------------
-   normal (out[0..2]) and depth (out[3]) of real particle i from its sums;
-   the length of the normal is kept as the coherence |sum n_k W| / sum W <= 1
+   normal and depth of real particle i from its sums; the length of the
+   normal is kept as the coherence |sum n_k W| / sum W <= 1
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::store_normal(int i, double *out)
+void PairESPHSolid::store_normal(int i)
 {
   const double *a = acc[i];
   const double n2 =
       a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
   if (n2 > 0.0 && a[A_WSUM] > 0.0) {
     const double inv = 1.0 / a[A_WSUM];
-    for (int d = 0; d < 3; d++) out[d] = a[A_NSUM + d] * inv;
-    out[3] = a[A_DSUM] * inv;
+    for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
+    state->depth[i] = a[A_DSUM] * inv;
   } else {
-    out[0] = out[1] = out[2] = out[3] = 0.0;
+    state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
+    state->depth[i] = 0.0;
   }
 }
 
@@ -1254,14 +1255,21 @@ void PairESPHSolid::compute_normals()
     comm_stage = COMM_NORMALS;
     comm->reverse_comm(this, 5);
   }
-  double out[4];
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) continue;
-    store_normal(i, out);
-    for (int d = 0; d < 3; d++) state->n[i][d] = out[d];
-    state->depth[i] = out[3];
+    store_normal(i);
   }
   normals_valid = 1;
+}
+
+/* ----------------------------------------------------------------------
+   normal and depth (4 values) of owned atom i that the last force
+   computation used (its hoisted copy; valid until the next computation)
+------------------------------------------------------------------------- */
+
+const double *PairESPHSolid::normal_used(int i) const
+{
+  return hq ? hq[i] + Q_N : nullptr;
 }
 
 /* ---------------------------------------------------------------------- */

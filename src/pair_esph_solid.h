@@ -44,6 +44,7 @@ class PairESPHSolid : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
+  const double *normal_used(int) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 28;
@@ -92,7 +93,7 @@ class PairESPHSolid : public Pair {
   int nforward, nreverse;
 
   int pred_valid;        // inside a step: the integrator's predicted end-of-step state is valid
-  int normals_valid;     // the real-particle normals in use need not be computed afresh
+  int normals_valid;     // the stored real-particle normals are the ones to use
   double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
@@ -108,7 +109,7 @@ class PairESPHSolid : public Pair {
   void hoist();
   void finalize(int eflag);
   void compute_normals();
-  void store_normal(int, double *);
+  void store_normal(int);
   void artificial_stress();
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
