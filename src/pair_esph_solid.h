@@ -92,7 +92,8 @@ class PairESPHSolid : public Pair {
   int comm_stage;
   int nforward, nreverse;
 
-  int pred_valid;        // inside a step: the integrator's predicted end-of-step state is valid
+  int pred_valid;        // the integrator's predicted end-of-step state is valid (inside a step,
+                         // and in the setup of a run that continues the previous one)
   int normals_valid;     // the stored real-particle normals are the ones to use
   double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
