@@ -184,6 +184,9 @@ void FixESPHIntegrate::reset_dt()
 
 void FixESPHIntegrate::setup(int /*vflag*/)
 {
+  // a continued run evaluated the setup forces at the prediction of the last step; force
+  // computations outside a step (e.g. rerun) see the state as is
+  pair->pred_valid = 0;
   state->fetch();
   double **v = atom->v;
   const int *mask = atom->mask;
