@@ -22,6 +22,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "esph_state.h"
 #include "esph_strength.h"
@@ -33,6 +34,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -42,6 +44,8 @@ using namespace FixConst;
 static constexpr int HOLD_STEPS = 10;
 // contact is on while the contact force exceeds this fraction of its peak
 static constexpr double FORCE_FRACTION = 0.01;
+// number of global values in restart files
+static constexpr int NRESTART = 10;
 
 /* ---------------------------------------------------------------------- */
 
@@ -49,6 +53,9 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), pred(nullptr), pair(nullptr), state(nullptr)
 {
   time_integrate = 1;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
   vector_flag = 1;
   size_vector = 8;
   global_freq = 1;
@@ -61,6 +68,12 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   nepisodes = 0;
   fcontact = fpeak = 0.0;
   tfirst = tlast = -1.0;
+  havepred = 0;
+  fp_natoms = -1;
+  fp_step = -1;
+  time_pending = 0;
+  time_file = 0.0;
+  step_file = -1;
   dtmin = 0.0;
   dtmax = 0.0;
 
@@ -102,6 +115,8 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
 }
 
 /* ----------------------------------------------------------------------
@@ -120,6 +135,7 @@ void FixESPHIntegrate::post_constructor()
 FixESPHIntegrate::~FixESPHIntegrate()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(pred);
   delete state;
 }
@@ -144,6 +160,14 @@ void FixESPHIntegrate::init()
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/integrate requires pair style esph/solid");
   if (modify->get_fix_by_style("^esph/integrate$").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
+  // a restart file written during a run with a fixed time step holds the elapsed time at
+  // the start of that run, and Integrate::init() counts the time from the current step:
+  // restore the time of the file's step, which this fix stored
+  if (time_pending && update->ntimestep == step_file) {
+    update->atime = time_file;
+    update->atimestep = update->ntimestep;
+  }
+  time_pending = 0;
   state->fetch();
   for (int t = 1; t <= atom->ntypes; t++)
     if (pair->yield[t] > 0.0 && !state->epsp)
@@ -170,6 +194,9 @@ void FixESPHIntegrate::reset_dt()
 
 void FixESPHIntegrate::setup(int /*vflag*/)
 {
+  // a continued run evaluated the setup forces at the prediction of the last step; force
+  // computations outside a step (e.g. rerun) see the state as is
+  pair->pred_valid = 0;
   state->fetch();
   double **v = atom->v;
   const int *mask = atom->mask;
@@ -311,8 +338,9 @@ void FixESPHIntegrate::final_integrate()
       v[i][2] = bvel[i][2];
     }
   }
-  // force computations outside a step (run setup, run pre no) see the state as is
+  // force computations outside a step see the state as is, unless a run continues
   pair->pred_valid = 0;
+  havepred = 1;
 
   // contact bookkeeping. The contact force F is the sum of the compressive normal forces
   // transmitted between bodies. Contact begins with the first touching or interacting
@@ -337,6 +365,124 @@ void FixESPHIntegrate::final_integrate()
       quiet++;
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   the run ends: remember the state the prediction belongs to, so that the
+   next run can tell whether it continues this one
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::post_run()
+{
+  state->fetch();
+  for (int i = 0; i < atom->nlocal; i++) {
+    save_normal_used(i, pred[i] + P_USED);
+    pred[i][P_HASH] = fingerprint(i);
+  }
+  fp_natoms = atom->natoms;
+  fp_step = update->ntimestep;
+}
+
+/* ----------------------------------------------------------------------
+   the normal and depth of real particle i that the last force computation
+   used: the stored normals are the ones it found, which the next step uses
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::save_normal_used(int i, double *out)
+{
+  const double *nu = pair->normal_used(i);
+  if (state->rmass[i] > 0.0 && nu)
+    for (int k = 0; k < 4; k++) out[k] = nu[k];
+  else
+    for (int k = 0; k < 4; k++) out[k] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   called by the pair style at the setup of a run: true if the prediction
+   of the last completed step (of the previous run, or of the run that wrote
+   the restart file) still belongs to every atom, i.e. nothing changed the
+   state since (set, velocity, displace_atoms, read_data, create_atoms,
+   delete_atoms, ...). Then the setup force computation is a re-evaluation
+   of the last one and the run continues exactly; otherwise it starts from
+   the current state. Work at run boundaries only.
+------------------------------------------------------------------------- */
+
+int FixESPHIntegrate::resume_check()
+{
+  int ok = havepred && update->whichflag == 1 && atom->natoms == fp_natoms;
+  state->fetch();
+  if (ok)
+    for (int i = 0; i < atom->nlocal; i++)
+      if (pred[i][P_HASH] != fingerprint(i)) {
+        ok = 0;
+        break;
+      }
+  int all;
+  MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, world);
+  // a fresh start: the prediction is stale until a step is completed
+  if (!all) {
+    havepred = 0;
+    return 0;
+  }
+  // the re-evaluation uses the normals the last computation used; it stores the ones it
+  // finds, as that computation did
+  for (int i = 0; i < atom->nlocal; i++)
+    if (state->rmass[i] > 0.0) {
+      for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
+      state->depth[i] = pred[i][P_USED + 3];
+    }
+  return 1;
+}
+
+/* ----------------------------------------------------------------------
+   fingerprint of the state of atom i: a 64-bit hash of the bits of every
+   per-atom quantity a step reads, stored as an integer-valued double (the
+   top 53 bits). Positions are taken as domain->pbc() will wrap them, so
+   that the wrap at the next setup or by write_restart changes nothing
+   (orthogonal boxes; in triclinic boxes the setup round trip through
+   lamda coordinates changes the bits and every run starts afresh).
+------------------------------------------------------------------------- */
+
+static inline uint64_t hash_mix(uint64_t h, double value)
+{
+  uint64_t z;
+  memcpy(&z, &value, sizeof(z));
+  // splitmix64 finaliser of h ^ value: every input bit changes every output bit
+  z ^= h + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+double FixESPHIntegrate::fingerprint(int i)
+{
+  double xw[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
+  if (!domain->triclinic) {
+    const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+    for (int d = 0; d < 3; d++) {
+      if (!per[d]) continue;
+      if (xw[d] < domain->boxlo[d]) xw[d] += domain->prd[d];
+      if (xw[d] >= domain->boxhi[d]) {
+        xw[d] -= domain->prd[d];
+        xw[d] = MAX(xw[d], domain->boxlo[d]);
+      }
+    }
+  }
+  uint64_t h = 0;
+  for (int d = 0; d < 3; d++) h = hash_mix(h, xw[d]);
+  for (int d = 0; d < 3; d++) h = hash_mix(h, atom->v[i][d]);
+  h = hash_mix(h, state->rmass[i]);
+  h = hash_mix(h, state->rho[i]);
+  h = hash_mix(h, state->e[i]);
+  h = hash_mix(h, state->h[i]);
+  for (int k = 0; k < 6; k++) h = hash_mix(h, state->s[i][k]);
+  for (int d = 0; d < 3; d++) h = hash_mix(h, state->n[i][d]);
+  h = hash_mix(h, state->depth[i]);
+  if (state->epsp) h = hash_mix(h, state->epsp[i]);
+  h = hash_mix(h, (double) atom->type[i]);
+  h = hash_mix(h, (double) state->body[i]);
+  h = hash_mix(h, (atom->mask[i] & groupbit) ? 1.0 : 0.0);
+  return (double) (h >> 11);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -408,6 +554,52 @@ double FixESPHIntegrate::compute_vector(int n)
   return (double) total;
 }
 
+/* ----------------------------------------------------------------------
+   global restart state: whether the per-atom prediction can be continued,
+   and the contact bookkeeping
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::write_restart(FILE *fp)
+{
+  // written inside a run after a step: the fingerprints of now (pack_restart);
+  // between runs: those stored at the end of the last run
+  const int now = (update->whichflag == 1 && update->ntimestep != fp_step);
+  double list[NRESTART] = {(double) havepred,
+                           (double) (now ? atom->natoms : fp_natoms),
+                           tfirst,
+                           tlast,
+                           (double) nepisodes,
+                           (double) quiet,
+                           fpeak,
+                           fcontact,
+                           update->atime + (update->ntimestep - update->atimestep) * update->dt,
+                           (double) update->ntimestep};
+  if (comm->me == 0) {
+    int size = sizeof(list);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), NRESTART, fp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixESPHIntegrate::restart(char *buf)
+{
+  const auto *list = (const double *) buf;
+  havepred = (int) list[0];
+  fp_natoms = (bigint) list[1];
+  fp_step = -1;
+  tfirst = list[2];
+  tlast = list[3];
+  nepisodes = (int) list[4];
+  quiet = (int) list[5];
+  fpeak = list[6];
+  fcontact = list[7];
+  time_file = list[8];
+  step_file = (bigint) list[9];
+  time_pending = 1;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void FixESPHIntegrate::grow_arrays(int nmax)
@@ -420,6 +612,16 @@ void FixESPHIntegrate::grow_arrays(int nmax)
 void FixESPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 {
   for (int k = 0; k < NPRED; k++) pred[j][k] = pred[i][k];
+}
+
+/* ----------------------------------------------------------------------
+   a new atom (create_atoms, fix esph/boundary, read_data add) has no prediction
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::set_arrays(int i)
+{
+  for (int k = 0; k < NPRED; k++) pred[i][k] = 0.0;
+  pred[i][P_HASH] = -1.0;    // fingerprints are >= 0
 }
 
 /* ---------------------------------------------------------------------- */
@@ -436,6 +638,47 @@ int FixESPHIntegrate::unpack_exchange(int nlocal, double *buf)
 {
   for (int k = 0; k < NPRED; k++) pred[nlocal][k] = buf[k];
   return NPRED;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixESPHIntegrate::pack_restart(int i, double *buf)
+{
+  // the first value is the count, as every fix with per-atom restart data writes it
+  buf[0] = NPRED + 1;
+  for (int k = 0; k < NPRED; k++) buf[k + 1] = pred[i][k];
+  if (update->whichflag == 1 && update->ntimestep != fp_step) {
+    state->fetch();
+    save_normal_used(i, buf + P_USED + 1);
+    buf[P_HASH + 1] = fingerprint(i);
+  }
+  return NPRED + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixESPHIntegrate::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  // skip the values of the fixes before this one
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < NPRED; k++) pred[nlocal][k] = extra[nlocal][m++];
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixESPHIntegrate::size_restart(int /*nlocal*/)
+{
+  return NPRED + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixESPHIntegrate::maxsize_restart()
+{
+  return NPRED + 1;
 }
 
 /* ---------------------------------------------------------------------- */

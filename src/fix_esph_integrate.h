@@ -35,17 +35,32 @@ class FixESPHIntegrate : public Fix {
   void initial_integrate(int) override;
   void final_integrate() override;
   void end_of_step() override;
+  void post_run() override;
   void reset_dt() override;
   double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
   double memory_usage() override;
 
-  // predicted end-of-step state, per atom: made in initial_integrate, read by the pair
-  // during the force computation; it migrates with the atoms (exchange, sorting)
-  static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, NPRED = 13;
+  // true if this run continues the last step exactly (see resume_check())
+  int resume_check();
+
+  // per atom, migrating with the atoms (exchange, sorting) and in restart files:
+  // the predicted end-of-step state, made in initial_integrate and read by the pair during
+  // the force computation; at the end of a run (and in restart files) the real-particle
+  // normal and depth that the last force computation used (P_USED .. P_USED + 3) and the
+  // fingerprint of the atom's state (P_HASH)
+  static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
+                       P_HASH = 17, NPRED = 18;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
 
@@ -57,10 +72,18 @@ class FixESPHIntegrate : public Fix {
   double fcontact, fpeak;    // contact force now and its peak
   int nepisodes;             // number of contact episodes so far
   double tfirst, tlast;      // start and end of the first contact episode
+  int havepred;              // pred holds the prediction of a completed step
+  bigint fp_natoms;          // number of atoms when the fingerprints were stored
+  bigint fp_step;            // step at which they were stored
+  int time_pending;          // read_restart: restore the elapsed time at the next init
+  double time_file;          // elapsed time and step when the restart file was written
+  bigint step_file;
   class PairESPHSolid *pair;
   class ESPHState *state;
 
   void adapt_dt();
+  double fingerprint(int);
+  void save_normal_used(int, double *);
 };
 
 }    // namespace LAMMPS_NS

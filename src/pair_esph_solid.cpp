@@ -495,13 +495,20 @@ double PairESPHSolid::init_one(int i, int j)
 }
 
 /* ----------------------------------------------------------------------
-   called at the start of each run: no prediction, fill unset density and h
+   called at the start of each run (not with run pre no), fill unset density
+   and h. A run that continues the previous one, with nothing changed in
+   between, re-evaluates the last force computation: at the state the
+   integrator predicted for the end of the last step, with the normals that
+   computation used (restored by the integrator), so the run goes on as if
+   it had not been interrupted. Otherwise the rates are evaluated at the
+   current state and the normals are computed afresh from the boundary
+   particles.
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::setup()
 {
-  pred_valid = 0;
-  normals_valid = 0;
+  pred_valid = fix_int->resume_check();
+  normals_valid = pred_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -1384,6 +1391,16 @@ void PairESPHSolid::compute_normals()
     if (state->gap[i] < GAP_NONE) state->gap[i] -= update->dt * state->gapv[i];
   }
   normals_valid = 1;
+}
+
+/* ----------------------------------------------------------------------
+   normal and depth (4 values) of owned atom i that the last force
+   computation used (its hoisted copy; valid until the next computation)
+------------------------------------------------------------------------- */
+
+const double *PairESPHSolid::normal_used(int i) const
+{
+  return hq ? hq[i] + Q_N : nullptr;
 }
 
 /* ---------------------------------------------------------------------- */

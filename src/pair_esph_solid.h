@@ -44,6 +44,7 @@ class PairESPHSolid : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
+  const double *normal_used(int) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 31;
@@ -92,8 +93,9 @@ class PairESPHSolid : public Pair {
   int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;
 
-  int pred_valid;        // inside a step: the integrator's predicted end-of-step state is valid
-  int normals_valid;     // stored real-particle normals are current
+  int pred_valid;        // the integrator's predicted end-of-step state is valid (inside a step,
+                         // and in the setup of a run that continues the previous one)
+  int normals_valid;     // the stored real-particle normals are the ones to use
   double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
