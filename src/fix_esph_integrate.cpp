@@ -384,17 +384,15 @@ void FixESPHIntegrate::post_run()
 }
 
 /* ----------------------------------------------------------------------
-   the normal and depth of real particle i that the last force computation
-   used: the stored normals are the ones it found, which the next step uses
+   the normal, surface gap and gap rate of real particle i that the last
+   force computation used: the stored ones are those it found, which the
+   next step uses
 ------------------------------------------------------------------------- */
 
 void FixESPHIntegrate::save_normal_used(int i, double *out)
 {
-  const double *nu = pair->normal_used(i);
-  if (state->rmass[i] > 0.0 && nu)
-    for (int k = 0; k < 4; k++) out[k] = nu[k];
-  else
-    for (int k = 0; k < 4; k++) out[k] = 0.0;
+  if (state->rmass[i] > 0.0 && pair->geometry_used(i, out)) return;
+  for (int k = 0; k < 5; k++) out[k] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -429,7 +427,8 @@ int FixESPHIntegrate::resume_check()
   for (int i = 0; i < atom->nlocal; i++)
     if (state->rmass[i] > 0.0) {
       for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
-      state->depth[i] = pred[i][P_USED + 3];
+      state->gap[i] = pred[i][P_USED + 3];
+      state->gapv[i] = pred[i][P_USED + 4];
     }
   return 1;
 }

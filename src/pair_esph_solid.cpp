@@ -1394,13 +1394,19 @@ void PairESPHSolid::compute_normals()
 }
 
 /* ----------------------------------------------------------------------
-   normal and depth (4 values) of owned atom i that the last force
-   computation used (its hoisted copy; valid until the next computation)
+   normal, surface gap and gap rate (5 values) of owned atom i that the
+   last force computation used (its hoisted copy; valid until the next
+   computation); false before any computation
 ------------------------------------------------------------------------- */
 
-const double *PairESPHSolid::normal_used(int i) const
+bool PairESPHSolid::geometry_used(int i, double *out) const
 {
-  return hq ? hq[i] + Q_N : nullptr;
+  if (!hq) return false;
+  const double *q = hq[i];
+  for (int k = 0; k < 3; k++) out[k] = q[Q_N + k];
+  out[3] = q[Q_GAP];
+  out[4] = q[Q_GAPV];
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -44,7 +44,7 @@ class PairESPHSolid : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
-  const double *normal_used(int) const;
+  bool geometry_used(int, double *) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 31;
