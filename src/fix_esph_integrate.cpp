@@ -391,7 +391,7 @@ void FixESPHIntegrate::post_run()
 
 void FixESPHIntegrate::save_normal_used(int i, double *out)
 {
-  if (state->rmass[i] > 0.0 && pair->geometry_used(i, out)) return;
+  if (pair->geometry_used(i, out)) return;
   for (int k = 0; k < 5; k++) out[k] = 0.0;
 }
 
@@ -424,12 +424,13 @@ int FixESPHIntegrate::resume_check()
   }
   // the re-evaluation uses the normals the last computation used; it stores the ones it
   // finds, as that computation did
-  for (int i = 0; i < atom->nlocal; i++)
-    if (state->rmass[i] > 0.0) {
+  // (boundary particles carry their own normals; their gaps are found by each computation)
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (state->rmass[i] > 0.0)
       for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
-      state->gap[i] = pred[i][P_USED + 3];
-      state->gapv[i] = pred[i][P_USED + 4];
-    }
+    state->gap[i] = pred[i][P_USED + 3];
+    state->gapv[i] = pred[i][P_USED + 4];
+  }
   return 1;
 }
 
