@@ -45,7 +45,7 @@ static constexpr int HOLD_STEPS = 10;
 // contact is on while the contact force exceeds this fraction of its peak
 static constexpr double FORCE_FRACTION = 0.01;
 // number of global values in restart files
-static constexpr int NRESTART = 10;
+static constexpr int NRESTART = 11;
 
 /* ---------------------------------------------------------------------- */
 
@@ -74,6 +74,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   time_pending = 0;
   time_file = 0.0;
   step_file = -1;
+  dt_used = 0.0;
   dtmin = 0.0;
   dtmax = 0.0;
 
@@ -379,6 +380,7 @@ void FixESPHIntegrate::post_run()
     save_normal_used(i, pred[i] + P_USED);
     pred[i][P_HASH] = fingerprint(i);
   }
+  dt_used = pair->dt_step;
   fp_natoms = atom->natoms;
   fp_step = update->ntimestep;
 }
@@ -431,6 +433,8 @@ int FixESPHIntegrate::resume_check()
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
   }
+  // and the time step of its gap forecast (with the cfl keyword the step has changed since)
+  pair->dt_step = dt_used;
   return 1;
 }
 
@@ -478,6 +482,8 @@ double FixESPHIntegrate::fingerprint(int i)
   for (int k = 0; k < 6; k++) h = hash_mix(h, state->s[i][k]);
   for (int d = 0; d < 3; d++) h = hash_mix(h, state->n[i][d]);
   h = hash_mix(h, state->depth[i]);
+  h = hash_mix(h, state->gap[i]);
+  h = hash_mix(h, state->gapv[i]);
   if (state->epsp) h = hash_mix(h, state->epsp[i]);
   h = hash_mix(h, (double) atom->type[i]);
   h = hash_mix(h, (double) state->body[i]);
@@ -573,7 +579,8 @@ void FixESPHIntegrate::write_restart(FILE *fp)
                            fpeak,
                            fcontact,
                            update->atime + (update->ntimestep - update->atimestep) * update->dt,
-                           (double) update->ntimestep};
+                           (double) update->ntimestep,
+                           now ? pair->dt_step : dt_used};
   if (comm->me == 0) {
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
@@ -597,6 +604,7 @@ void FixESPHIntegrate::restart(char *buf)
   fcontact = list[7];
   time_file = list[8];
   step_file = (bigint) list[9];
+  dt_used = list[10];
   time_pending = 1;
 }
 

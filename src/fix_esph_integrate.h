@@ -79,6 +79,7 @@ class FixESPHIntegrate : public Fix {
   int time_pending;          // read_restart: restore the elapsed time at the next init
   double time_file;          // elapsed time and step when the restart file was written
   bigint step_file;
+  double dt_used;    // time step of the last force computation, saved at post_run
   class PairESPHSolid *pair;
   class ESPHState *state;
 

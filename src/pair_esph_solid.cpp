@@ -115,6 +115,8 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   pred_valid = 0;
   normals_valid = 0;
   dt_cfl = 0.0;
+  dt_step = 0.0;
+  dt_keep = 0;
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
   comm_stage = COMM_HOIST;
@@ -507,8 +509,10 @@ double PairESPHSolid::init_one(int i, int j)
 
 void PairESPHSolid::setup()
 {
+  // (resume_check() restores the time step of the last computation for the gap forecast)
   pred_valid = fix_int->resume_check();
   normals_valid = pred_valid;
+  dt_keep = pred_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -649,6 +653,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   grow_work();
   state->fetch();
+  if (!dt_keep) dt_step = update->dt;
+  dt_keep = 0;
 
   const int nall = atom->nlocal + atom->nghost;
   const int bnd = (nboundary > 0);
@@ -780,7 +786,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   const double norm0 = kernel_norm(kernel, dim, h0);
   const double hinv0 = 1.0 / h0;
   const double gap_band = gaptol * h0;
-  const double dt = update->dt;
+  const double dt = dt_step;
   const int solid = (contact == CONTACT_SOLID);
   // artificial stress: 1 / W(dp) at constant h
   double wdp_inv0 = 0.0;

@@ -97,6 +97,8 @@ class PairESPHSolid : public Pair {
                          // and in the setup of a run that continues the previous one)
   int normals_valid;     // the stored real-particle normals are the ones to use
   double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
+  double dt_step;        // time step of the step of this force computation (gap forecast)
+  int dt_keep;           // the next computation re-evaluates the last one: keep dt_step
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
   double fcontact;       // sum of transmitted compressive normal pair forces (local)
