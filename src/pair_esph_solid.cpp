@@ -959,10 +959,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           const double gap = contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
           if (gap <= 0.0 && count_pair) ntouch_pairs++;
           phi = contact_weight(gap, gap_band);
-          // no tension across contact: a pair that would pull does not interact at all
-          // (also not in the strain rate and energy, which would otherwise see work that
-          // no force does)
-          if (phi == 0.0 || fn > 0.0) continue;
+          // no tension across contact: a pair that would pull (or not push) does not
+          // interact at all (also not in the strain rate and energy, which would otherwise
+          // see work that no force does)
+          if (phi == 0.0 || fn >= 0.0) continue;
         } else if (!contact_approach(vn, xn)) {
           continue;
         }

@@ -17,12 +17,13 @@ sc = et.summary(log, "ROD_IMPACT_CONTACT")
 print("INFO solid:", s, sc)
 th = et.thermo(log)[-1]
 t = np.array(th["v_tus"])
-# Tolerances at R/4: measured contact times 8.69 / 8.55 / 8.27 us at dx = 0.25 / 0.2 /
-# 0.1 mm converge on 8.23 us from above (at R/4 the rod has 4 particles per radius), so
-# 7 % here, and the 0.2 mm run must be closer. The residual impactor velocity is 3D
+# Tolerances at R/4: measured contact times 8.84 / 8.33 us at dx = 0.25 / 0.1 mm converge
+# on 8.23 us from above (at R/4 the rod has 4 particles per radius; the contact rule's
+# coupling band of 0.05 h adds about 0.1 us at 0.25 mm, 8.73 us with a band of 0.01 h), so
+# 8 % here, and the 0.2 mm run must be closer. The residual impactor velocity is 3D
 # lateral inertia (0.63) plus the AV-spread release (~1 m/s at this h, see test_rod1d),
 # so below 2 m/s; after separation the means must stay constant.
-c.near("contact time [us]", s["contact_time_us"], 8.23, 0.07 * 8.23,
+c.near("contact time [us]", s["contact_time_us"], 8.23, 0.08 * 8.23,
        "3D elastic 8.23 us; coarse R/4 resolution, converging from above")
 s2 = et.summary(et.run(a, "rod_impact/in.rod_impact", dict(base, dx=0.2, thermo_every=500),
                        log="log.solid02"))
