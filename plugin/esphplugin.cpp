@@ -17,6 +17,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_esph_contact.h"
 #include "fix_esph_boundary.h"
 #include "fix_esph_integrate.h"
 #include "pair_esph_solid.h"
@@ -36,6 +37,11 @@ static Fix *fix_esph_integrate_creator(LAMMPS *lmp, int argc, char **argv)
 static Fix *fix_esph_boundary_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixESPHBoundary(lmp, argc, argv);
+}
+
+static Compute *compute_esph_contact_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new ComputeESPHContact(lmp, argc, argv);
 }
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -62,5 +68,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "esph/boundary";
   plugin.info = "ESPH non-mass boundary particles with normals v0.1";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_esph_boundary_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "esph/contact";
+  plugin.info = "ESPH contact bookkeeping per pair of bodies v0.1";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_esph_contact_creator;
   (*register_plugin)(&plugin, lmp);
 }

@@ -137,6 +137,63 @@ inline bool contact_approach(double vn, double xn)
   return vn * xn < 0.0;
 }
 
+/* the contact history of one pair of bodies (or of all bodies together), updated once
+   per time step from the step's sums: ntouch touching pairs, nint interacting pairs and
+   the transmitted compressive normal force F. Contact begins with the first touching or
+   interacting pair (tfirst, the start of that step); it lasts while F exceeds
+   FORCE_FRACTION of its peak so far. An episode is a period with F above that level;
+   interruptions of up to HOLD_STEPS steps belong to the same episode; tlast is the end
+   of the first episode. The impulse is the time integral of F. */
+
+struct ContactRecord {
+  static constexpr int HOLD_STEPS = 10;
+  static constexpr double FORCE_FRACTION = 0.01;
+  static constexpr int NVALUES = 10;    // values packed by pack()/unpack()
+
+  double tfirst = -1.0, tlast = -1.0;
+  double force = 0.0, fpeak = 0.0, impulse = 0.0;
+  double ntouch = 0.0, nint = 0.0;
+  int nepisodes = 0, quiet = 0;
+  double tlatest = -1.0;    // end of the last step with F above the level
+
+  void update(double t, double dt, double touch, double inter, double f)
+  {
+    ntouch = touch;
+    nint = inter;
+    force = f;
+    impulse += f * dt;
+    if (tfirst < 0.0 && (touch > 0.0 || inter > 0.0)) tfirst = t - dt;
+    if (f > fpeak) fpeak = f;
+    if (f > 0.0 && f >= FORCE_FRACTION * fpeak) {
+      if (nepisodes == 0 || quiet > HOLD_STEPS) nepisodes++;
+      if (nepisodes == 1) tlast = t;
+      tlatest = t;
+      quiet = 0;
+    } else {
+      quiet++;
+    }
+  }
+  void pack(double *buf) const
+  {
+    const double v[NVALUES] = {tfirst, tlast,   force, fpeak,           impulse,
+                               ntouch, nint,    (double) nepisodes, (double) quiet, tlatest};
+    for (int k = 0; k < NVALUES; k++) buf[k] = v[k];
+  }
+  void unpack(const double *buf)
+  {
+    tfirst = buf[0];
+    tlast = buf[1];
+    force = buf[2];
+    fpeak = buf[3];
+    impulse = buf[4];
+    ntouch = buf[5];
+    nint = buf[6];
+    nepisodes = (int) buf[7];
+    quiet = (int) buf[8];
+    tlatest = buf[9];
+  }
+};
+
 }    // namespace ESPH
 
 #endif

@@ -33,6 +33,7 @@
 #include "pair_esph_solid.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -365,7 +366,57 @@ void FixESPHIntegrate::final_integrate()
     } else {
       quiet++;
     }
+    update_body_pairs(t);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the contact history of every pair of bodies, from the pair style's
+   tallies of this step: body pairs seen for the first time on any rank
+   join the (sorted, global) list; then one sum over ranks
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::update_body_pairs(double t)
+{
+  const auto &tally = pair->body_tally;
+  std::vector<int> fresh;
+  for (const auto &kv : tally)
+    if (!std::binary_search(body_pairs.begin(), body_pairs.end(), kv.first)) {
+      fresh.push_back(kv.first.first);
+      fresh.push_back(kv.first.second);
+    }
+  int nfresh = fresh.size(), nfresh_all;
+  MPI_Allreduce(&nfresh, &nfresh_all, 1, MPI_INT, MPI_SUM, world);
+  if (nfresh_all > 0) {
+    std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+    MPI_Allgather(&nfresh, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int p = 0, tot = 0; p < comm->nprocs; p++) {
+      displs[p] = tot;
+      tot += counts[p];
+    }
+    std::vector<int> all(nfresh_all);
+    MPI_Allgatherv(fresh.data(), nfresh, MPI_INT, all.data(), counts.data(), displs.data(),
+                   MPI_INT, world);
+    for (int k = 0; k < nfresh_all; k += 2) {
+      const std::pair<int, int> key(all[k], all[k + 1]);
+      auto it = std::lower_bound(body_pairs.begin(), body_pairs.end(), key);
+      if (it != body_pairs.end() && *it == key) continue;
+      const auto pos = it - body_pairs.begin();
+      body_pairs.insert(it, key);
+      body_records.insert(body_records.begin() + pos, ESPH::ContactRecord());
+    }
+  }
+  const int np = body_pairs.size();
+  if (np == 0) return;
+  std::vector<double> local(3 * np, 0.0), total(3 * np);
+  for (const auto &kv : tally) {
+    const auto pos =
+        std::lower_bound(body_pairs.begin(), body_pairs.end(), kv.first) - body_pairs.begin();
+    for (int k = 0; k < 3; k++) local[3 * pos + k] = kv.second[k];
+  }
+  MPI_Allreduce(local.data(), total.data(), 3 * np, MPI_DOUBLE, MPI_SUM, world);
+  for (int p = 0; p < np; p++)
+    body_records[p].update(t, update->dt, total[3 * p], total[3 * p + 1], total[3 * p + 2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -581,10 +632,20 @@ void FixESPHIntegrate::write_restart(FILE *fp)
                            update->atime + (update->ntimestep - update->atimestep) * update->dt,
                            (double) update->ntimestep,
                            now ? pair->dt_step : dt_used};
+  // then the contact history per pair of bodies
+  std::vector<double> bp(1, (double) body_pairs.size());
+  for (size_t p = 0; p < body_pairs.size(); p++) {
+    bp.push_back(body_pairs[p].first);
+    bp.push_back(body_pairs[p].second);
+    double v[ESPH::ContactRecord::NVALUES];
+    body_records[p].pack(v);
+    bp.insert(bp.end(), v, v + ESPH::ContactRecord::NVALUES);
+  }
   if (comm->me == 0) {
-    int size = sizeof(list);
+    int size = sizeof(list) + bp.size() * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(list, sizeof(double), NRESTART, fp);
+    fwrite(bp.data(), sizeof(double), bp.size(), fp);
   }
 }
 
@@ -606,6 +667,16 @@ void FixESPHIntegrate::restart(char *buf)
   step_file = (bigint) list[9];
   dt_used = list[10];
   time_pending = 1;
+  const double *bp = list + NRESTART;
+  const int np = (int) bp[0];
+  body_pairs.clear();
+  body_records.clear();
+  for (int p = 0; p < np; p++) {
+    const double *r = bp + 1 + p * (2 + ESPH::ContactRecord::NVALUES);
+    body_pairs.emplace_back((int) r[0], (int) r[1]);
+    body_records.emplace_back();
+    body_records.back().unpack(r + 2);
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -22,6 +22,11 @@ FixStyle(esph/integrate,FixESPHIntegrate);
 
 #include "fix.h"
 
+#include "esph_contact.h"
+
+#include <utility>
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixESPHIntegrate : public Fix {
@@ -65,6 +70,11 @@ class FixESPHIntegrate : public Fix {
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
 
+  // contact history per pair of bodies (I < J) that have touched, the same on every rank,
+  // sorted by bodies (compute esph/contact)
+  std::vector<std::pair<int, int>> body_pairs;
+  std::vector<ESPH::ContactRecord> body_records;
+
  protected:
   double dtv, dtf, dth;
   double cfl;                // CFL safety factor, 0 = fixed time step
@@ -73,6 +83,7 @@ class FixESPHIntegrate : public Fix {
   double fcontact, fpeak;    // contact force now and its peak
   int nepisodes;             // number of contact episodes so far
   double tfirst, tlast;      // start and end of the first contact episode
+  void update_body_pairs(double t);
   int havepred;              // pred holds the prediction of a completed step
   bigint fp_natoms;          // number of atoms when the fingerprints were stored
   bigint fp_step;            // step at which they were stored

@@ -675,6 +675,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
+  body_tally.clear();
   run_pair_loop(bnd);
 
   if (force->newton_pair) {
@@ -957,7 +958,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         if (solid) {
           // the gaps of both particles, brought to the present with their rates
           const double gap = contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
-          if (gap <= 0.0 && count_pair) ntouch_pairs++;
+          if (gap <= 0.0 && count_pair) {
+            ntouch_pairs++;
+            tally_bodies(bi, body[j])[0] += 1.0;
+          }
           phi = contact_weight(gap, gap_band);
           // no tension across contact: a pair that would pull (or not push) does not
           // interact at all (also not in the strain rate and energy, which would otherwise
@@ -974,10 +978,16 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         ff[0] = fn * nc[0];
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];
-        if (count_pair) ncontact_pairs++;
         // transmitted compressive normal force; with newton off a pair with a ghost
         // partner is seen by two ranks
-        fcontact -= (newton_pair || j < nlocal) ? fn : 0.5 * fn;
+        const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
+        fcontact += fpair;
+        auto &tb = tally_bodies(bi, body[j]);
+        tb[2] += fpair;
+        if (count_pair) {
+          ncontact_pairs++;
+          tb[1] += 1.0;
+        }
       }
 
       fxi += ff[0];
@@ -1265,6 +1275,19 @@ void PairESPHSolid::store_normal(int i)
     state->gap[i] = GAP_NONE;
     state->gapv[i] = 0.0;
   }
+}
+
+/* ----------------------------------------------------------------------
+   the tally of the pair of bodies a, b (in either order) of this compute
+------------------------------------------------------------------------- */
+
+std::array<double, 3> &PairESPHSolid::tally_bodies(int a, int b)
+{
+  const auto key = (a < b) ? std::make_pair(a, b) : std::make_pair(b, a);
+  auto it = body_tally.find(key);
+  if (it == body_tally.end())
+    it = body_tally.emplace(key, std::array<double, 3>{0.0, 0.0, 0.0}).first;
+  return it->second;
 }
 
 /* ----------------------------------------------------------------------

@@ -24,6 +24,10 @@ PairStyle(esph/solid,PairESPHSolid);
 
 #include "esph_eos.h"
 
+#include <array>
+#include <map>
+#include <utility>
+
 namespace LAMMPS_NS {
 
 class PairESPHSolid : public Pair {
@@ -102,6 +106,9 @@ class PairESPHSolid : public Pair {
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
   double fcontact;       // sum of transmitted compressive normal pair forces (local)
+  // per pair of bodies (I < J) of the last compute: touching pairs, interacting pairs,
+  // transmitted compressive normal force (local sums)
+  std::map<std::pair<int, int>, std::array<double, 3>> body_tally;
   bigint nboundary;      // number of boundary (zero-mass) particles, counted at setup
 
   class ESPHState *state;
@@ -114,6 +121,7 @@ class PairESPHSolid : public Pair {
   void finalize(int eflag);
   void compute_normals();
   void store_bnd_gap(int);
+  std::array<double, 3> &tally_bodies(int, int);
   void store_normal(int);
   void artificial_stress();
   void run_pair_loop(int);

@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""Three bodies in a row (examples/newton_cradle, 3D, 0.25 mm): compute esph/contact
+reports each interface apart. Its impulse is the momentum handed across the interface,
+its first touch is when the gap has closed, each interface touches once, momentum is
+conserved to round-off, and the same on 1 and 2 ranks."""
+import numpy as np
+
+import esphtest as et
+
+a = et.parse_args()
+c = et.Checks("three bodies: contact per interface")
+CR = "newton_cradle/in.newton_cradle"
+DX, V, L = 0.25, 50.0, 10.0
+RHO = 7850.0
+
+
+def cradle(name, np_=1, **v):
+    var = {"dx": DX, "thermo_every": 50}
+    var.update(v)
+    log = et.run(a, CR, var, np=np_, log=f"log.{name}")
+    return log, et.summary(log, "NEWTON_CRADLE")
+
+
+log, s = cradle("np1")
+print("INFO", s)
+# the two-rod impact of the same rods for the contact duration
+ref = et.summary(et.run(a, "rod_impact/in.rod_impact",
+                        {"dx": DX, "Limp": L, "Ltgt": L, "tend": 8, "out": 0},
+                        log="log.pair"))
+print("INFO two rods:", ref)
+p0 = s["p0"]
+c.true("rows: bodies 1-2, then 2-3",
+       (s["row1_I"], s["row1_J"], s["row2_I"], s["row2_J"]) == (1, 2, 2, 3),
+       "one row per touching pair of bodies, sorted")
+dt = 0.5 / 35    # time step [us] at 0.25 mm
+c.near("interface 1-2: first touch [us]", s["first12_us"], 0.5 * DX * 1e-3 / V * 1e6, 2 * dt,
+       "gap / V within 2 steps")
+c.near("interface 1-2: episodes", s["ep12"], 1, 0, "one contact")
+c.near("interface 2-3: episodes", s["ep23"], 1, 0, "one contact")
+# the impulse is the momentum the interface hands on: 1 % for the rims, where the common
+# normal is tilted and the force has a component across the axis
+c.near("interface 1-2: impulse vs momentum lost by rod 1", s["J12"], p0 * (1 - s["v1"] / V),
+       0.01 * p0, "momentum balance of rod 1")
+c.near("interface 2-3: impulse vs momentum of rod 3", s["J23"], p0 * s["v3"] / V, 0.01 * p0,
+       "momentum balance of rod 3")
+for k in ("tc12_us", "tc23_us"):
+    c.near(f"{k}: contact duration [us]", s[k], ref["contact_time_us"],
+           0.01 * ref["contact_time_us"], "the two-rod impact of the same rods, 1 %")
+c.less("momentum drift", s["momentum_drift_rel"], 1e-12, "round-off")
+c.true("the second interface touches after the first has released",
+       s["first23_us"] > s["first12_us"] + s["tc12_us"], "sequential impacts")
+
+# MPI: the same thermo and the same interface summary to round-off
+log2, s2 = cradle("np2", np_=2)
+th1, th2 = et.thermo(log)[-1], et.thermo(log2)[-1]
+worst = max(np.abs(np.array(th1[k]) - np.array(th2[k])).max() / max(np.abs(th1[k]).max(), 1e-30)
+            for k in ("KinEng", "PotEng", "c_v1", "c_v2", "c_v3", "c_px"))
+c.less("np 1 vs np 2: worst thermo difference", worst, 1e-10, "round-off")
+for k in ("first12_us", "tc12_us", "first23_us", "tc23_us", "ep12", "ep23"):
+    c.near(f"np 1 vs np 2: {k}", s2[k], s[k], 0, "the same steps")
+for k in ("J12", "J23"):
+    c.near(f"np 1 vs np 2: {k}", s2[k], s[k], 1e-10 * abs(s[k]), "round-off")
+c.done()
