@@ -26,6 +26,7 @@
 //                  from the facing boundary particle of the other body, at a real particle the
 //                  mean over its own body's boundary particles; GAP_NONE = no other body near
 //   d_esph_gapv    its rate of change
+//   d_esph_eng     engagement of a real particle with another body (0..1, see esph_contact.h)
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -53,13 +54,13 @@ class ESPHState {
   explicit ESPHState(LAMMPS *lmp);
   void fetch();
 
-  double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv;
+  double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
   double *epsp;    // equivalent plastic strain, nullptr without plasticity
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, iepsp;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp;
 };
 
 }    // namespace LAMMPS_NS

@@ -28,6 +28,7 @@
 #include "domain.h"
 #include "error.h"
 #include "esph_check.h"
+#include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
 #include "force.h"
@@ -510,6 +511,9 @@ void FixESPHBoundary::generate()
     state->e[m] = 0.0;
     state->h[m] = state->h[s];
     state->depth[m] = 0.0;
+    state->gap[m] = ESPH::GAP_NONE;
+    state->gapv[m] = 0.0;
+    state->eng[m] = 0.0;
     for (int d = 0; d < 6; d++) state->s[m][d] = 0.0;
   }
 

@@ -445,7 +445,7 @@ void FixESPHIntegrate::post_run()
 void FixESPHIntegrate::save_normal_used(int i, double *out)
 {
   if (pair->geometry_used(i, out)) return;
-  for (int k = 0; k < 5; k++) out[k] = 0.0;
+  for (int k = 0; k < 6; k++) out[k] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -483,6 +483,7 @@ int FixESPHIntegrate::resume_check()
       for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
+    state->eng[i] = pred[i][P_USED + 5];
   }
   // and the time step of its gap forecast (with the cfl keyword the step has changed since)
   pair->dt_step = dt_used;
@@ -535,6 +536,7 @@ double FixESPHIntegrate::fingerprint(int i)
   h = hash_mix(h, state->depth[i]);
   h = hash_mix(h, state->gap[i]);
   h = hash_mix(h, state->gapv[i]);
+  h = hash_mix(h, state->eng[i]);
   if (state->epsp) h = hash_mix(h, state->epsp[i]);
   h = hash_mix(h, (double) atom->type[i]);
   h = hash_mix(h, (double) state->body[i]);

@@ -85,9 +85,10 @@ static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
 static constexpr int Q_E = 16;
 static constexpr int Q_ZETA = 17;
 static constexpr int Q_GAPV = 18;    // its rate (d_esph_gapv)
+static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng)
 // with the artificial stress only (not communicated: computed for ghosts from Q_A)
-static constexpr int Q_R = 19;        // 19..24 artificial stress R / rho^2 (Voigt)
-static constexpr int Q_RFLAG = 25;    // 1 if R != 0
+static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
+static constexpr int Q_RFLAG = 26;    // 1 if R != 0
 
 enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS };
 
@@ -105,7 +106,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   restartinfo = 0;
   one_coeff = 0;
   manybody_flag = 0;
-  comm_forward = 19;    // 12 + 5 contact geometry + 2 heat
+  comm_forward = 20;    // 12 + 6 contact geometry + 2 heat
   comm_reverse = NACC;
 
   h0 = 0.0;
@@ -141,7 +142,8 @@ void PairESPHSolid::set_defaults()
   hvar_flag = 0;
   hmax = 1.0;
   contact = CONTACT_SOLID;
-  gaptol = 0.05;
+  gaptol = 0.002;
+  onset = 10;
   correct_flag = 0;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -309,6 +311,13 @@ void PairESPHSolid::settings(int narg, char **arg)
         error->all(FLERR, iarg + 2, "Pair esph/solid xsph epsilon must be in [0, 1], got {}",
                    arg[iarg + 1]);
       xsph_flag = (xsph_eps > 0.0);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "onset") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid onset", error);
+      onset = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (onset < 0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid onset must be >= 0 steps, got {}",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
@@ -599,6 +608,7 @@ void PairESPHSolid::hoist()
     q[Q_N + 2] = state->n[i][2];
     q[Q_GAP] = state->gap[i];
     q[Q_GAPV] = state->gapv[i];
+    q[Q_ENG] = state->eng[i];
     if (rmass[i] > 0.0) {
       const int itype = type[i];
       const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
@@ -661,7 +671,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // forward communication of what neighbours need, in one message
   comm_bnd = bnd;
-  nforward = 12 + (bnd ? 5 : 0) + (heat_flag ? 2 : 0);
+  nforward = 12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;
@@ -962,7 +972,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
             ntouch_pairs++;
             tally_bodies(bi, body[j])[0] += 1.0;
           }
-          phi = contact_weight(gap, gap_band);
+          phi = contact_pair_weight(gap, gap_band, qi[Q_ENG], qj[Q_ENG]);
           // no tension across contact: a pair that would pull (or not push) does not
           // interact at all (also not in the strain rate and energy, which would otherwise
           // see work that no force does)
@@ -1275,6 +1285,11 @@ void PairESPHSolid::store_normal(int i)
     state->gap[i] = GAP_NONE;
     state->gapv[i] = 0.0;
   }
+  // engagement for the next computation, from the gap it will see; the stored value is
+  // the one this computation used until now (hoisted)
+  state->eng[i] = (contact == CONTACT_SOLID)
+      ? contact_engage(hq[i][Q_ENG], state->gap[i] + dt_step * state->gapv[i], onset)
+      : 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -1331,6 +1346,7 @@ void PairESPHSolid::compute_normals()
       hq[i][Q_V + d] = v[i][d];
     }
     hq[i][Q_H] = state->h[i];
+    hq[i][Q_ENG] = state->eng[i];
   }
   comm_stage = COMM_NORMALS;
   comm->forward_comm(this, 7);
@@ -1423,7 +1439,7 @@ void PairESPHSolid::compute_normals()
 }
 
 /* ----------------------------------------------------------------------
-   normal, surface gap and gap rate (5 values) of owned atom i that the
+   normal, surface gap, gap rate and engagement (6 values) of owned atom i that the
    last force computation used (its hoisted copy; valid until the next
    computation); false before any computation
 ------------------------------------------------------------------------- */
@@ -1435,6 +1451,7 @@ bool PairESPHSolid::geometry_used(int i, double *out) const
   for (int k = 0; k < 3; k++) out[k] = q[Q_N + k];
   out[3] = q[Q_GAP];
   out[4] = q[Q_GAPV];
+  out[5] = q[Q_ENG];
   return true;
 }
 
@@ -1466,6 +1483,7 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
     if (comm_bnd) {
       for (int k = Q_N; k <= Q_GAP; k++) buf[m++] = q[k];
       buf[m++] = q[Q_GAPV];
+      buf[m++] = q[Q_ENG];
     }
     if (heat_flag) {
       buf[m++] = q[Q_E];
@@ -1503,6 +1521,7 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
     if (comm_bnd) {
       for (int k = Q_N; k <= Q_GAP; k++) q[k] = buf[m++];
       q[Q_GAPV] = buf[m++];
+      q[Q_ENG] = buf[m++];
     }
     if (heat_flag) {
       q[Q_E] = buf[m++];

@@ -53,7 +53,7 @@ class PairESPHSolid : public Pair {
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 31;
   // hoisted per-particle quantities sent to ghosts every step
-  static constexpr int NHQ = 19;
+  static constexpr int NHQ = 20;
   // more hoisted quantities per atom with the artificial stress (R and its flag)
   static constexpr int NHQ_AST = 7;
 
@@ -69,7 +69,8 @@ class PairESPHSolid : public Pair {
   int hvar_flag;         // variable smoothing length (eq. 24)
   double hmax;           // allowed growth of h (cutoff factor)
   int contact;           // ESPH::ContactRule
-  double gaptol;         // contact gap tolerance (fraction of h0)
+  double gaptol;         // contact coupling band in the overlap (fraction of h0)
+  int onset;             // steps over which a newly touching particle's coupling builds up
   int correct_flag;      // kernel-gradient corrected velocity gradient
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon

@@ -281,6 +281,20 @@ TEST(Contact, NormalGapWeight)
   // one-sided slopes vanish at both ends (the mean slope over the band is 1 / 0.05 = 20)
   EXPECT_NEAR(contact_weight(-e, 0.05) / e, 0.0, 1e-3);
   EXPECT_NEAR((1.0 - contact_weight(-0.05 + e, 0.05)) / e, 0.0, 1e-3);
+  // engagement: grows by 1/onset per step while the gap is closed, drops when it opens
+  double eng = 0.0;
+  for (int k = 0; k < 4; k++) eng = contact_engage(eng, -1e-3, 10);
+  EXPECT_NEAR(eng, 0.4, 1e-15);
+  for (int k = 0; k < 20; k++) eng = contact_engage(eng, -1e-3, 10);
+  EXPECT_EQ(eng, 1.0);
+  EXPECT_EQ(contact_engage(eng, 0.0, 10), 0.0);
+  EXPECT_EQ(contact_engage(0.0, -1e-9, 0), 1.0);
+  // pair weight: the gap weight limited by the smoothed engagement of the more engaged one
+  EXPECT_EQ(contact_pair_weight(0.01, 0.05, 1.0, 1.0), 0.0);
+  EXPECT_EQ(contact_pair_weight(-0.1, 0.05, 1.0, 0.0), 1.0);
+  EXPECT_EQ(contact_pair_weight(-0.1, 0.05, 0.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(contact_pair_weight(-0.1, 0.05, 0.5, 0.2), 0.5);
+  EXPECT_DOUBLE_EQ(contact_pair_weight(-0.025, 0.05, 1.0, 0.0), 0.5);
   // paper rule: approaching along nc
   EXPECT_TRUE(contact_approach(+1.0, -1.0));
   EXPECT_FALSE(contact_approach(-1.0, -1.0));
