@@ -21,7 +21,7 @@ cases = [
     ("off-axis rods", "offaxis_rods/in.offaxis_rods",
      {"dx": 0.5, "tend": 3, "out": 0, "thermo_every": 20}),
     ("oblique rod on block", "oblique_rod/in.oblique_rod",
-     {"dx": 0.25, "tend": 2, "thermo_every": 20}),
+     {"dx": 0.25, "tend": 6, "thermo_every": 20}),
     ("colliding rings", "colliding_rings/in.colliding_rings",
      {"dx": 1.0, "tend": 40, "thermo_every": 50}),
     ("colliding rings, xsph", "colliding_rings/in.colliding_rings",
