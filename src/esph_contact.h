@@ -33,11 +33,11 @@
 // from i into the other body.
 // Rules:
 //   PAPER : interact iff the particles approach along nc, (vij.nc)(xij.nc) < 0 (eq. 31).
-//   SOLID : (default) the cross-body coupling is weighted by contact_pair_weight(): 0 while
-//           the gap is open, rising smoothly (C1) to 1 over the first band of overlap, and
-//           for particles that have just touched over the next onset steps
-//           (contact_engage); a pair whose normal force would not push does not interact
-//           (no tension across contact).
+//   SOLID : (default) the cross-body coupling is weighted by contact_pair_weight(), the
+//           smoothed engagement of the particles (contact_engage): it rises over onset steps
+//           once a particle's gap has closed and falls over as many once it has opened, and
+//           is 0 across a gap larger than a cap; a pair whose normal force would not push
+//           does not interact (no tension across contact).
 // Either way only normal components couple: the force is projected on nc and the relative
 // velocity entering the strain rate is (vij.nc) nc.
 
@@ -120,40 +120,27 @@ inline double contact_gap_pair(double gi, double gj)
   return gi < gj ? gi : gj;
 }
 
-/* weight of the cross-body coupling in the gap: 0 while the gap is open (gap >= 0),
-   rising C1 smoothly to 1 over the first band of overlap (gap <= -band) */
-
-inline double contact_weight(double gap, double band)
-{
-  if (gap >= 0.0) return 0.0;
-  if (gap <= -band) return 1.0;
-  const double t = -gap / band;
-  return t * t * (3.0 - 2.0 * t);
-}
-
 /* engagement of a real particle with another body, from the gap it will have at the next
-   force computation: it grows by 1/onset per step while that gap is closed (at once with
-   onset 0) and drops to 0 when the gap opens */
+   force computation: it grows by 1/onset per step while that gap is closed and falls by
+   as much while it is open (onset 0: 1 or 0 at once) */
 
 inline double contact_engage(double eng, double gap_next, int onset)
 {
-  if (gap_next >= 0.0) return 0.0;
-  if (onset <= 0) return 1.0;
-  const double e = eng + 1.0 / onset;
-  return e < 1.0 ? e : 1.0;
+  if (onset <= 0) return gap_next < 0.0 ? 1.0 : 0.0;
+  const double e = (gap_next < 0.0) ? eng + 1.0 / onset : eng - 1.0 / onset;
+  return e < 0.0 ? 0.0 : (e > 1.0 ? 1.0 : e);
 }
 
-/* weight of the cross-body coupling of a pair: the gap weight, limited by the smoothed
-   engagement of the more engaged particle, so that a newly touching pair is coupled
-   over onset steps instead of at once */
+/* weight of the cross-body coupling of a pair: the smoothed engagement S(e) =
+   e^2 (3 - 2e) of the more engaged particle, so that a newly touching pair is coupled
+   over onset steps and a separating one released over as many; never across a gap of
+   more than cap (then 0) */
 
-inline double contact_pair_weight(double gap, double band, double ei, double ej)
+inline double contact_pair_weight(double gap, double cap, double ei, double ej)
 {
-  const double w = contact_weight(gap, band);
-  if (w == 0.0) return 0.0;
+  if (gap >= cap) return 0.0;
   const double e = ei > ej ? ei : ej;
-  const double we = e * e * (3.0 - 2.0 * e);
-  return w < we ? w : we;
+  return e * e * (3.0 - 2.0 * e);
 }
 
 /* paper rule: true when the particles approach along nc. vn = vij.nc, xn = xij.nc */

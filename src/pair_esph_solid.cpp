@@ -142,7 +142,7 @@ void PairESPHSolid::set_defaults()
   hvar_flag = 0;
   hmax = 1.0;
   contact = CONTACT_SOLID;
-  gaptol = 0.002;
+  gaptol = 0.05;
   onset = 10;
   correct_flag = 0;
   astress_flag = 0;
@@ -796,7 +796,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   // constant h: kernel normalisation once
   const double norm0 = kernel_norm(kernel, dim, h0);
   const double hinv0 = 1.0 / h0;
-  const double gap_band = gaptol * h0;
+  const double gap_cap = gaptol * h0;
   const double dt = dt_step;
   const int solid = (contact == CONTACT_SOLID);
   // artificial stress: 1 / W(dp) at constant h
@@ -972,7 +972,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
             ntouch_pairs++;
             tally_bodies(bi, body[j])[0] += 1.0;
           }
-          phi = contact_pair_weight(gap, gap_band, qi[Q_ENG], qj[Q_ENG]);
+          phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
           // no tension across contact: a pair that would pull (or not push) does not
           // interact at all (also not in the strain rate and energy, which would otherwise
           // see work that no force does)

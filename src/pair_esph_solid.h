@@ -69,7 +69,7 @@ class PairESPHSolid : public Pair {
   int hvar_flag;         // variable smoothing length (eq. 24)
   double hmax;           // allowed growth of h (cutoff factor)
   int contact;           // ESPH::ContactRule
-  double gaptol;         // contact coupling band in the overlap (fraction of h0)
+  double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
   int onset;             // steps over which a newly touching particle's coupling builds up
   int correct_flag;      // kernel-gradient corrected velocity gradient
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability

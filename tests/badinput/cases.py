@@ -156,7 +156,7 @@ CASES = [
     ("ps_gaptol_missing", [K("pair", " gap/tol")], "error:missing argument"),
     ("ps_gaptol_negative", [K("pair", " gap/tol -1")], "error:gap/tol must be >= 0"),
     ("ps_gaptol_text", [K("pair", " gap/tol tiny")], "error:Expected floating point"),
-    ("ps_gaptol_default", [K("pair", " gap/tol 0.002")], "same"),
+    ("ps_gaptol_default", [K("pair", " gap/tol 0.05")], "same"),
     ("ps_onset_missing", [K("pair", " onset")], "error:missing argument"),
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),

@@ -270,31 +270,23 @@ TEST(Contact, NormalGapWeight)
   EXPECT_EQ(contact_gap_pair(0.3, -0.1), -0.1);
   EXPECT_EQ(contact_gap_pair(GAP_NONE, 0.2), 0.2);
   EXPECT_EQ(contact_gap_pair(GAP_NONE, GAP_NONE), GAP_NONE);
-  // the weight: 0 while the gap is open, 1 beyond the band of overlap, C1 in between
-  EXPECT_EQ(contact_weight(0.5, 0.05), 0.0);
-  EXPECT_EQ(contact_weight(0.0, 0.05), 0.0);
-  EXPECT_EQ(contact_weight(-0.05, 0.05), 1.0);
-  EXPECT_EQ(contact_weight(-0.5, 0.05), 1.0);
-  EXPECT_EQ(contact_weight(GAP_NONE, 0.05), 0.0);
-  EXPECT_DOUBLE_EQ(contact_weight(-0.025, 0.05), 0.5);
-  const double e = 1e-7;
-  // one-sided slopes vanish at both ends (the mean slope over the band is 1 / 0.05 = 20)
-  EXPECT_NEAR(contact_weight(-e, 0.05) / e, 0.0, 1e-3);
-  EXPECT_NEAR((1.0 - contact_weight(-0.05 + e, 0.05)) / e, 0.0, 1e-3);
-  // engagement: grows by 1/onset per step while the gap is closed, drops when it opens
+  // engagement: grows by 1/onset per step while the gap is closed, falls as fast when open
   double eng = 0.0;
   for (int k = 0; k < 4; k++) eng = contact_engage(eng, -1e-3, 10);
   EXPECT_NEAR(eng, 0.4, 1e-15);
   for (int k = 0; k < 20; k++) eng = contact_engage(eng, -1e-3, 10);
   EXPECT_EQ(eng, 1.0);
-  EXPECT_EQ(contact_engage(eng, 0.0, 10), 0.0);
+  eng = contact_engage(eng, 1e-3, 10);
+  EXPECT_NEAR(eng, 0.9, 1e-15);
+  for (int k = 0; k < 20; k++) eng = contact_engage(eng, 1e-3, 10);
+  EXPECT_EQ(eng, 0.0);
   EXPECT_EQ(contact_engage(0.0, -1e-9, 0), 1.0);
-  // pair weight: the gap weight limited by the smoothed engagement of the more engaged one
-  EXPECT_EQ(contact_pair_weight(0.01, 0.05, 1.0, 1.0), 0.0);
-  EXPECT_EQ(contact_pair_weight(-0.1, 0.05, 1.0, 0.0), 1.0);
+  EXPECT_EQ(contact_engage(1.0, 0.0, 0), 0.0);
+  // pair weight: the smoothed engagement of the more engaged one, 0 beyond the cap
+  EXPECT_EQ(contact_pair_weight(0.06, 0.05, 1.0, 1.0), 0.0);
+  EXPECT_EQ(contact_pair_weight(0.01, 0.05, 1.0, 0.0), 1.0);
   EXPECT_EQ(contact_pair_weight(-0.1, 0.05, 0.0, 0.0), 0.0);
   EXPECT_DOUBLE_EQ(contact_pair_weight(-0.1, 0.05, 0.5, 0.2), 0.5);
-  EXPECT_DOUBLE_EQ(contact_pair_weight(-0.025, 0.05, 1.0, 0.0), 0.5);
   // paper rule: approaching along nc
   EXPECT_TRUE(contact_approach(+1.0, -1.0));
   EXPECT_FALSE(contact_approach(-1.0, -1.0));
