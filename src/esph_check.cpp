@@ -307,10 +307,12 @@ void ESPHCheck::integrators(LAMMPS *lmp, Fix *fix_int, int move)
 }
 
 /* ----------------------------------------------------------------------
-   every rank gathers the real group particles once (as fix esph/boundary's
-   generation does) and finds the nearest same-body neighbour of its own in a
+   every rank finds for each of its real group particles the nearest
+   same-body neighbour among its own particles (no gather: memory O(N/P)) in a
    hash grid of cell size spacing, searched up to MAX_RATIO cells away; the
-   median comes from a global histogram, the same on any number of ranks
+   median comes from a global histogram. Particles whose nearest neighbour is
+   on another rank count as far (at most a thin layer at subdomain faces),
+   which the median does not see
 ------------------------------------------------------------------------- */
 
 double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double spacing)
@@ -326,19 +328,12 @@ double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double
     for (int d = 0; d < 3; d++) mine.push_back(atom->x[i][d]);
     mine.push_back((double) st->body[i]);
   }
-  int nmine = mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  if (total == 0) return -1.0;
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, lmp->world);
-  const int nall = total / 4, first = displs[lmp->comm->me] / 4, nown = nmine / 4;
+  const bigint nown = mine.size() / 4;
+  bigint nall;
+  MPI_Allreduce(&nown, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  if (nall == 0) return -1.0;
+  const std::vector<double> &all = mine;
+  const int first = 0;
 
   auto cell = [spacing](double c) {
     return (long long) floor(c / spacing);
@@ -348,13 +343,13 @@ double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double
     return ((ix + off) << 42) | ((iy + off) << 21) | (iz + off);
   };
   std::unordered_map<long long, std::vector<int>> grid;
-  for (int k = 0; k < nall; k++)
+  for (int k = 0; k < (int) nown; k++)
     grid[key(cell(all[4 * k]), cell(all[4 * k + 1]), cell(all[4 * k + 2]))].push_back(k);
 
   const int reach = (int) ceil(MAX_RATIO);
   const double rmax = MAX_RATIO * spacing;
   std::vector<bigint> hist(NN_BINS * reach + 1, 0), histall(hist.size());
-  for (int q = 0; q < nown; q++) {
+  for (int q = 0; q < (int) nown; q++) {
     const int k = first + q;
     const double *p = &all[4 * k];
     const long long cx = cell(p[0]), cy = cell(p[1]), cz = cell(p[2]);
