@@ -188,8 +188,9 @@ struct ContactRecord {
   }
   void pack(double *buf) const
   {
-    const double v[NVALUES] = {tfirst, tlast,   force, fpeak,           impulse,
-                               ntouch, nint,    (double) nepisodes, (double) quiet, tlatest};
+    const double v[NVALUES] = {tfirst,         tlast,  force, fpeak,
+                               impulse,        ntouch, nint,  (double) nepisodes,
+                               (double) quiet, tlatest};
     for (int k = 0; k < NVALUES; k++) buf[k] = v[k];
   }
   void unpack(const double *buf)

@@ -46,7 +46,8 @@ void ESPHState::ensure(LAMMPS *lmp)
   // three fixes, so that each data-file line stays below read_data's 256 characters
   std::string cmd = std::string(FIX_ID) + " all property/atom";
   if (!lmp->atom->rmass_flag) cmd += " rmass";
-  cmd += " d_esph_rho d_esph_e d_esph_h i_esph_body d_esph_depth d_esph_gap d_esph_gapv d_esph_eng ghost yes";
+  cmd += " d_esph_rho d_esph_e d_esph_h i_esph_body d_esph_depth d_esph_gap d_esph_gapv d_esph_eng "
+         "ghost yes";
   lmp->modify->add_fix(cmd);
   lmp->modify->add_fix(std::string(FIX_ID_STRESS) + " all property/atom d2_esph_s 6 ghost yes");
   lmp->modify->add_fix(std::string(FIX_ID_NORMAL) + " all property/atom d2_esph_n 3 ghost yes");
@@ -64,8 +65,7 @@ void ESPHState::ensure_plastic(LAMMPS *lmp)
 
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
-    gap(nullptr), gapv(nullptr), eng(nullptr),
-    body(nullptr), epsp(nullptr), lmp(_lmp), iepsp(-1)
+    gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), lmp(_lmp), iepsp(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -79,8 +79,8 @@ ESPHState::ESPHState(LAMMPS *_lmp) :
   igap = lmp->atom->find_custom("esph_gap", flag, cols);
   igapv = lmp->atom->find_custom("esph_gapv", flag, cols);
   ieng = lmp->atom->find_custom("esph_eng", flag, cols);
-  if (irho < 0 || ie < 0 || ih < 0 || is < 0 || in < 0 || idepth < 0 || ibody < 0 ||
-      igap < 0 || igapv < 0 || ieng < 0)
+  if (irho < 0 || ie < 0 || ih < 0 || is < 0 || in < 0 || idepth < 0 || ibody < 0 || igap < 0 ||
+      igapv < 0 || ieng < 0)
     lmp->error->all(FLERR, Error::NOLASTLINE, "ESPH per-atom state in fix {} is incomplete",
                     FIX_ID);
   fetch();

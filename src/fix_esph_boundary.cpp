@@ -300,9 +300,9 @@ void FixESPHBoundary::generate()
   }
 
   const int dim = domain->dimension;
-  const double cut = ESPH::KERNEL_SUPPORT * spacing;           // detection support
-  const double hn = smooth * spacing;                          // normal kernel h
-  const double reach_len = ESPH::KERNEL_SUPPORT * hn;          // >= cut (smooth >= 1)
+  const double cut = ESPH::KERNEL_SUPPORT * spacing;     // detection support
+  const double hn = smooth * spacing;                    // normal kernel h
+  const double reach_len = ESPH::KERNEL_SUPPORT * hn;    // >= cut (smooth >= 1)
   const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
   const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
 
@@ -357,8 +357,7 @@ void FixESPHBoundary::generate()
         if (q.x[0] < b[0] || q.x[0] > b[3] || q.x[1] < b[1] || q.x[1] > b[4] || q.x[2] < b[2] ||
             q.x[2] > b[5])
           continue;
-        out[p].insert(out[p].end(),
-                      {q.x[0], q.x[1], q.x[2], (double) q.tag, (double) q.body});
+        out[p].insert(out[p].end(), {q.x[0], q.x[1], q.x[2], (double) q.tag, (double) q.body});
       }
     std::vector<int> scount(nprocs), rcount(nprocs), sdispl(nprocs), rdispl(nprocs);
     for (int p = 0; p < nprocs; p++) scount[p] = out[p].size();
@@ -371,9 +370,10 @@ void FixESPHBoundary::generate()
       rtot += rcount[p];
     }
     std::vector<double> sbuf(stot), rbuf(rtot);
-    for (int p = 0; p < nprocs; p++) std::copy(out[p].begin(), out[p].end(), &sbuf[sdispl[p]]);
-    MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(),
-                  rcount.data(), rdispl.data(), MPI_DOUBLE, world);
+    for (int p = 0; p < nprocs; p++)
+      std::copy(out[p].begin(), out[p].end(), sbuf.data() + sdispl[p]);
+    MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
+                  rdispl.data(), MPI_DOUBLE, world);
     for (int k = 0; k < rtot; k += 5) {
       Pt q;
       q.x[0] = rbuf[k];
@@ -390,7 +390,9 @@ void FixESPHBoundary::generate()
   auto cell_of = [&](const double *x, long long *c) {
     for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / cut) + (1 << 20);
   };
-  auto key_of = [](const long long *c) { return (c[0] << 42) | (c[1] << 21) | c[2]; };
+  auto key_of = [](const long long *c) {
+    return (c[0] << 42) | (c[1] << 21) | c[2];
+  };
   std::vector<int> order(pts.size());
   for (size_t k = 0; k < pts.size(); k++) order[k] = k;
   std::sort(order.begin(), order.end(), [&pts](int a, int b) {
@@ -437,7 +439,8 @@ void FixESPHBoundary::generate()
             if (p.body != bi) continue;
             const double d[3] = {p.x[0] - xi[0], p.x[1] - xi[1], p.x[2] - xi[2]};
             const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (r > 0.0 && r < NEAR_SHELL * spacing) nearest.insert(nearest.end(), {d[0], d[1], d[2]});
+            if (r > 0.0 && r < NEAR_SHELL * spacing)
+              nearest.insert(nearest.end(), {d[0], d[1], d[2]});
             double w, dw;
             if (ESPH::kernel_eval(ESPH::CUBIC, 3, normn, 1.0 / hn, r, w, dw)) {
               cn[0] += w * d[0];

@@ -395,8 +395,8 @@ void FixESPHIntegrate::update_body_pairs(double t)
       tot += counts[p];
     }
     std::vector<int> all(nfresh_all);
-    MPI_Allgatherv(fresh.data(), nfresh, MPI_INT, all.data(), counts.data(), displs.data(),
-                   MPI_INT, world);
+    MPI_Allgatherv(fresh.data(), nfresh, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
+                   world);
     for (int k = 0; k < nfresh_all; k += 2) {
       const std::pair<int, int> key(all[k], all[k + 1]);
       auto it = std::lower_bound(body_pairs.begin(), body_pairs.end(), key);

@@ -85,11 +85,11 @@ class FixESPHIntegrate : public Fix {
   int nepisodes;             // number of contact episodes so far
   double tfirst, tlast;      // start and end of the first contact episode
   void update_body_pairs(double t);
-  int havepred;              // pred holds the prediction of a completed step
-  bigint fp_natoms;          // number of atoms when the fingerprints were stored
-  bigint fp_step;            // step at which they were stored
-  int time_pending;          // read_restart: restore the elapsed time at the next init
-  double time_file;          // elapsed time and step when the restart file was written
+  int havepred;        // pred holds the prediction of a completed step
+  bigint fp_natoms;    // number of atoms when the fingerprints were stored
+  bigint fp_step;      // step at which they were stored
+  int time_pending;    // read_restart: restore the elapsed time at the next init
+  double time_file;    // elapsed time and step when the restart file was written
   bigint step_file;
   double dt_used;    // time step of the last force computation, saved at post_run
   class PairESPHSolid *pair;

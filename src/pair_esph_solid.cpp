@@ -79,8 +79,8 @@ static constexpr int Q_V = 0;    // 0..2 predicted velocity
 static constexpr int Q_RHO = 3;
 static constexpr int Q_C = 4;
 static constexpr int Q_H = 5;
-static constexpr int Q_A = 6;     // 6..11 sigma / rho^2 (Voigt)
-static constexpr int Q_N = 12;    // 12..14 normal
+static constexpr int Q_A = 6;       // 6..11 sigma / rho^2 (Voigt)
+static constexpr int Q_N = 12;      // 12..14 normal
 static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
 static constexpr int Q_E = 16;
 static constexpr int Q_ZETA = 17;
@@ -967,7 +967,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         double phi = 1.0;
         if (solid) {
           // the gaps of both particles, brought to the present with their rates
-          const double gap = contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
+          const double gap =
+              contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
           if (gap <= 0.0 && count_pair) {
             ntouch_pairs++;
             tally_bodies(bi, body[j])[0] += 1.0;
@@ -1414,8 +1415,7 @@ void PairESPHSolid::compute_normals()
         if (rsq >= cutsq_global) continue;
         const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
         double w, dw;
-        if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w,
-                         dw))
+        if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w, dw))
           continue;
         const int p = (rmass[i] > 0.0) ? i : j;
         const int k = (p == i) ? j : i;

@@ -110,7 +110,7 @@ class PairESPHSolid : public Pair {
   // per pair of bodies (I < J) of the last compute: touching pairs, interacting pairs,
   // transmitted compressive normal force (local sums)
   std::map<std::pair<int, int>, std::array<double, 3>> body_tally;
-  bigint nboundary;      // number of boundary (zero-mass) particles, counted at setup
+  bigint nboundary;    // number of boundary (zero-mass) particles, counted at setup
 
   class ESPHState *state;
   class FixESPHIntegrate *fix_int;
