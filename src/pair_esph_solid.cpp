@@ -685,7 +685,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
-  body_tally.clear();
+  // keep the nodes of body pairs seen before: no allocation in the pair loop once known
+  for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
   run_pair_loop(bnd);
 
   if (force->newton_pair) {
