@@ -152,8 +152,9 @@ inline bool contact_approach(double vn, double xn)
 
 /* the contact history of one pair of bodies (or of all bodies together), updated once
    per time step from the step's sums: ntouch touching pairs, nint interacting pairs and
-   the transmitted compressive normal force F. Contact begins with the first touching or
-   interacting pair (tfirst, the start of that step); it lasts while F exceeds
+   the transmitted compressive normal force F. Contact begins with the first touching
+   pair (tfirst, the start of that step; under the paper's rule, which measures no gap,
+   an interacting pair is a touching one); it lasts while F exceeds
    FORCE_FRACTION of its peak so far. An episode is a period with F above that level;
    interruptions of up to HOLD_STEPS steps belong to the same episode; tlast is the end
    of the first episode. The impulse is the time integral of F. */
@@ -175,7 +176,7 @@ struct ContactRecord {
     nint = inter;
     force = f;
     impulse += f * dt;
-    if (tfirst < 0.0 && (touch > 0.0 || inter > 0.0)) tfirst = t - dt;
+    if (tfirst < 0.0 && touch > 0.0) tfirst = t - dt;
     if (f > fpeak) fpeak = f;
     if (f > 0.0 && f >= FORCE_FRACTION * fpeak) {
       if (nepisodes == 0 || quiet > HOLD_STEPS) nepisodes++;

@@ -41,12 +41,10 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-// contact interruptions up to this many steps belong to the same contact episode
-static constexpr int HOLD_STEPS = 10;
-// contact is on while the contact force exceeds this fraction of its peak
-static constexpr double FORCE_FRACTION = 0.01;
-// number of global values in restart files
-static constexpr int NRESTART = 11;
+// number of global values in restart files before the contact records, the first of
+// which tells the layout
+static constexpr int NRESTART = 6;
+static constexpr double RESTART_LAYOUT = 20261202.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -65,10 +63,6 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 
   cfl = 0.0;
   move = 1;
-  quiet = 0;
-  nepisodes = 0;
-  fcontact = fpeak = 0.0;
-  tfirst = tlast = -1.0;
   havepred = 0;
   fp_natoms = -1;
   fp_step = -1;
@@ -344,28 +338,17 @@ void FixESPHIntegrate::final_integrate()
   pair->pred_valid = 0;
   havepred = 1;
 
-  // contact bookkeeping. The contact force F is the sum of the compressive normal forces
-  // transmitted between bodies. Contact begins with the first touching or interacting
-  // pair; it lasts while F exceeds FORCE_FRACTION of its peak so far, so that bodies left
-  // resting against each other without load (a short striker that has stopped) or a
-  // surface particle bouncing once at first touch do not change the contact time.
-  // An episode is a period with F above that level; interruptions of up to HOLD_STEPS
-  // steps belong to the same episode.
+  // contact bookkeeping (ESPH::ContactRecord): the contact force F is the sum of the
+  // compressive normal forces transmitted between bodies; contact begins with the first
+  // touching pair and lasts while F exceeds a fraction of its peak so far, so that bodies
+  // left resting against each other without load (a short striker that has stopped) or
+  // a surface particle bouncing once at first touch do not change the contact time
   if (pair->nboundary > 0) {
     double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs, pair->fcontact};
     double total[3];
     MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
     const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-    if (tfirst < 0.0 && (total[0] > 0.0 || total[1] > 0.0)) tfirst = t - update->dt;
-    fcontact = total[2];
-    if (fcontact > fpeak) fpeak = fcontact;
-    if (fcontact > 0.0 && fcontact >= FORCE_FRACTION * fpeak) {
-      if (nepisodes == 0 || quiet > HOLD_STEPS) nepisodes++;
-      if (nepisodes == 1) tlast = t;
-      quiet = 0;
-    } else {
-      quiet++;
-    }
+    contact_all.update(t, update->dt, total[0], total[1], total[2]);
     update_body_pairs(t);
   }
 }
@@ -604,10 +587,10 @@ double FixESPHIntegrate::compute_vector(int n)
     MPI_Allreduce(&pair->dt_cfl, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
     return dt;
   }
-  if (n == 3) return tfirst;
-  if (n == 4) return tlast;
-  if (n == 5) return (double) nepisodes;
-  if (n == 7) return fcontact;
+  if (n == 3) return contact_all.tfirst;
+  if (n == 4) return contact_all.tlast;
+  if (n == 5) return (double) contact_all.nepisodes;
+  if (n == 7) return contact_all.force;
   int local = pair->ntouch_pairs, total;
   MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
   return (double) total;
@@ -623,19 +606,16 @@ void FixESPHIntegrate::write_restart(FILE *fp)
   // written inside a run after a step: the fingerprints of now (pack_restart);
   // between runs: those stored at the end of the last run
   const int now = (update->whichflag == 1 && update->ntimestep != fp_step);
-  double list[NRESTART] = {(double) havepred,
+  double list[NRESTART] = {RESTART_LAYOUT,
+                           (double) havepred,
                            (double) (now ? atom->natoms : fp_natoms),
-                           tfirst,
-                           tlast,
-                           (double) nepisodes,
-                           (double) quiet,
-                           fpeak,
-                           fcontact,
                            update->atime + (update->ntimestep - update->atimestep) * update->dt,
                            (double) update->ntimestep,
                            now ? pair->dt_step : dt_used};
-  // then the contact history per pair of bodies
-  std::vector<double> bp(1, (double) body_pairs.size());
+  // then the contact history of all bodies and per pair of bodies
+  std::vector<double> bp(ESPH::ContactRecord::NVALUES);
+  contact_all.pack(bp.data());
+  bp.push_back((double) body_pairs.size());
   for (size_t p = 0; p < body_pairs.size(); p++) {
     bp.push_back(body_pairs[p].first);
     bp.push_back(body_pairs[p].second);
@@ -656,20 +636,20 @@ void FixESPHIntegrate::write_restart(FILE *fp)
 void FixESPHIntegrate::restart(char *buf)
 {
   const auto *list = (const double *) buf;
-  havepred = (int) list[0];
-  fp_natoms = (bigint) list[1];
+  if (list[0] != RESTART_LAYOUT)
+    error->all(FLERR,
+               "Fix {} state in the restart file is of another version of the package: "
+               "write the restart file again with this version",
+               style);
+  havepred = (int) list[1];
+  fp_natoms = (bigint) list[2];
   fp_step = -1;
-  tfirst = list[2];
-  tlast = list[3];
-  nepisodes = (int) list[4];
-  quiet = (int) list[5];
-  fpeak = list[6];
-  fcontact = list[7];
-  time_file = list[8];
-  step_file = (bigint) list[9];
-  dt_used = list[10];
+  time_file = list[3];
+  step_file = (bigint) list[4];
+  dt_used = list[5];
   time_pending = 1;
-  const double *bp = list + NRESTART;
+  contact_all.unpack(list + NRESTART);
+  const double *bp = list + NRESTART + ESPH::ContactRecord::NVALUES;
   const int np = (int) bp[0];
   body_pairs.clear();
   body_records.clear();

@@ -78,12 +78,9 @@ class FixESPHIntegrate : public Fix {
 
  protected:
   double dtv, dtf, dth;
-  double cfl;                // CFL safety factor, 0 = fixed time step
-  double dtmin, dtmax;       // bounds of the adaptive step
-  int quiet;                 // steps since the contact force was last on
-  double fcontact, fpeak;    // contact force now and its peak
-  int nepisodes;             // number of contact episodes so far
-  double tfirst, tlast;      // start and end of the first contact episode
+  double cfl;                         // CFL safety factor, 0 = fixed time step
+  double dtmin, dtmax;                // bounds of the adaptive step
+  ESPH::ContactRecord contact_all;    // contact history of all bodies together
   void update_body_pairs(double t);
   int havepred;        // pred holds the prediction of a completed step
   bigint fp_natoms;    // number of atoms when the fingerprints were stored

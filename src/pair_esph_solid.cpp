@@ -981,6 +981,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           if (phi == 0.0 || fn >= 0.0) continue;
         } else if (!contact_approach(vn, xn)) {
           continue;
+        } else if (count_pair) {
+          // the paper's rule measures no gap: an interacting pair is a touching one
+          ntouch_pairs++;
+          tally_bodies(bi, body[j])[0] += 1.0;
         }
         // the coupling weight scales force, strain rate and heating alike, so that the
         // work of the force is what the internal energy receives
