@@ -17,6 +17,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_esph_atom.h"
 #include "compute_esph_contact.h"
 #include "fix_esph_boundary.h"
 #include "fix_esph_integrate.h"
@@ -37,6 +38,11 @@ static Fix *fix_esph_integrate_creator(LAMMPS *lmp, int argc, char **argv)
 static Fix *fix_esph_boundary_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixESPHBoundary(lmp, argc, argv);
+}
+
+static Compute *compute_esph_atom_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new ComputeESPHAtom(lmp, argc, argv);
 }
 
 static Compute *compute_esph_contact_creator(LAMMPS *lmp, int argc, char **argv)
@@ -74,5 +80,10 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "esph/contact";
   plugin.info = "ESPH contact bookkeeping per pair of bodies v0.1";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_esph_contact_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "esph/atom";
+  plugin.info = "ESPH per-atom pressure, stress, strain, sound speed and contact v0.1";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_esph_atom_creator;
   (*register_plugin)(&plugin, lmp);
 }

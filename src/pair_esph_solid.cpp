@@ -90,7 +90,7 @@ static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng
 static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
 static constexpr int Q_RFLAG = 26;    // 1 if R != 0
 
-enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS };
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT };
 
 static constexpr double BIG_DT = 1.0e300;
 
@@ -99,8 +99,8 @@ static constexpr double BIG_DT = 1.0e300;
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), matset(nullptr),
     nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr),
-    bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0), state(nullptr),
-    fix_int(nullptr)
+    bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0), atom_contact_flag(0),
+    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -168,6 +168,7 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(bvel);
   memory->destroy(bspin);
   memory->destroy(xsph);
+  memory->destroy(atom_contact);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -490,6 +491,8 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
+  // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
+  atom_contact_flag = 0;
   neighbor->add_request(this);
 }
 
@@ -687,11 +690,16 @@ void PairESPHSolid::compute(int eflag, int vflag)
   fcontact = 0.0;
   // keep the nodes of body pairs seen before: no allocation in the pair loop once known
   for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
+  if (atom_contact_flag) atom_contact_clear();
   run_pair_loop(bnd);
 
   if (force->newton_pair) {
     comm_stage = COMM_ACC;
     comm->reverse_comm(this, nreverse);
+    if (atom_contact_flag) {
+      comm_stage = COMM_ATOM_CONTACT;
+      comm->reverse_comm(this, 2);
+    }
   }
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
@@ -1003,6 +1011,16 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         if (count_pair) {
           ncontact_pairs++;
           tb[1] += 1.0;
+        }
+        // per-atom contact output of compute esph/atom, only when one asks for it
+        if (atom_contact_flag) {
+          double **catom = atom_contact;
+          catom[i][0] += 1.0;
+          catom[i][1] -= fn;
+          if (jown) {
+            catom[j][0] += 1.0;
+            catom[j][1] -= fn;
+          }
         }
       }
 
@@ -1544,6 +1562,13 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   const int last = first + n;
+  if (comm_stage == COMM_ATOM_CONTACT) {
+    for (int i = first; i < last; i++) {
+      buf[m++] = atom_contact[i][0];
+      buf[m++] = atom_contact[i][1];
+    }
+    return m;
+  }
   for (int i = first; i < last; i++) {
     const double *a = acc[i];
     if (comm_stage == COMM_NORMALS) {
@@ -1563,6 +1588,13 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
 void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (comm_stage == COMM_ATOM_CONTACT) {
+    for (int i = 0; i < n; i++) {
+      atom_contact[list[i]][0] += buf[m++];
+      atom_contact[list[i]][1] += buf[m++];
+    }
+    return;
+  }
   const double *rmass = state->rmass;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
@@ -1596,6 +1628,7 @@ double PairESPHSolid::memory_usage()
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (NACC + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
+  bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   return bytes;
 }
 
@@ -1607,4 +1640,21 @@ void *PairESPHSolid::extract(const char *str, int &dim_out)
   if (strcmp(str, "h") == 0) return (void *) &h0;
   if (strcmp(str, "cut") == 0) return (void *) &cut_global;
   return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   per-atom contact output for compute esph/atom: zeroed for owned and
+   ghost atoms before the pair loop, which adds to it for every interacting
+   cross-body pair (count, transmitted compressive normal force)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::atom_contact_clear()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > atom_contact_nmax) {
+    atom_contact_nmax = atom->nmax;
+    memory->destroy(atom_contact);
+    memory->create(atom_contact, atom_contact_nmax, 2, "pair:atom_contact");
+  }
+  if (nall > 0) memset(&atom_contact[0][0], 0, sizeof(double) * 2 * nall);
 }

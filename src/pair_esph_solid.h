@@ -32,6 +32,7 @@ namespace LAMMPS_NS {
 
 class PairESPHSolid : public Pair {
   friend class FixESPHIntegrate;
+  friend class ComputeESPHAtom;
 
  public:
   PairESPHSolid(class LAMMPS *);
@@ -112,6 +113,13 @@ class PairESPHSolid : public Pair {
   std::map<std::pair<int, int>, std::array<double, 3>> body_tally;
   bigint nboundary;    // number of boundary (zero-mass) particles, counted at setup
 
+  // per-atom contact output for compute esph/atom, only while one asks for it (its init()
+  // sets the flag, init_style() clears it): interacting cross-body pairs and the sum of
+  // their transmitted compressive normal forces (reverse communicated)
+  int atom_contact_flag;
+  int atom_contact_nmax;
+  double **atom_contact;
+
   class ESPHState *state;
   class FixESPHIntegrate *fix_int;
 
@@ -125,6 +133,7 @@ class PairESPHSolid : public Pair {
   std::array<double, 3> &tally_bodies(int, int);
   void store_normal(int);
   void artificial_stress();
+  void atom_contact_clear();
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
   template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();

@@ -171,6 +171,27 @@ TEST_F(ESPHTest, MissingIntegrator)
                command("run 0 post no"););
 }
 
+// compute esph/atom: a wrong keyword is named with the list of the right ones; without
+// pair esph/solid (here pair zero, and no fix esph/integrate to fail first) the compute names
+// what it needs and what it found
+TEST_F(ESPHTest, ComputeAtomBadInput)
+{
+  block();
+  TEST_FAILURE(".*ERROR: Unknown compute esph/atom keyword vonmisses: expected pressure, "
+               "vonmises, .*contact/force.*",
+               command("compute 1 all esph/atom pressure vonmisses"););
+  TEST_FAILURE(".*ERROR: Unknown compute esph/atom keyword stress: expected .*stress/\\*.*",
+               command("compute 1 all esph/atom stress"););
+  BEGIN_HIDE_OUTPUT();
+  command("pair_style zero 1.0e-4");
+  command("pair_coeff * *");
+  command("compute 1 all esph/atom");
+  END_HIDE_OUTPUT();
+  TEST_FAILURE(".*ERROR: Compute esph/atom requires pair style esph/solid .*found pair style "
+               "zero.*",
+               command("run 0 post no"););
+}
+
 TEST_F(ESPHTest, WrongUnits)
 {
   BEGIN_HIDE_OUTPUT();
