@@ -41,6 +41,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -65,6 +66,10 @@ static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
 // optional pair terms, bits of the last template parameter of pair_loop()
 static constexpr int EXTRA_ASTRESS = 1;
 static constexpr int EXTRA_XSPH = 2;
+static constexpr int EXTRA_FRICTION = 4;
+// the friction of a pair never exceeds the force that would stop the pair's slip within
+// 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
+static constexpr double STICK_SHARE = 32.0;
 // boundary particles
 static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
 static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
@@ -151,6 +156,7 @@ void PairESPHSolid::set_defaults()
   astress_dp = 0.0;
   xsph_flag = 0;
   xsph_eps = 0.0;
+  friction = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -320,6 +326,14 @@ void PairESPHSolid::settings(int narg, char **arg)
         error->all(FLERR, iarg + 2, "Pair esph/solid onset must be >= 0 steps, got {}",
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "friction") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid friction", error);
+      friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (friction < 0.0 || !std::isfinite(friction))
+        error->all(FLERR, iarg + 2,
+                   "Pair esph/solid friction coefficient must be a finite number >= 0, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
       gaptol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -330,6 +344,11 @@ void PairESPHSolid::settings(int narg, char **arg)
       error->all(FLERR, iarg + 1, "Unknown pair_style esph/solid keyword: {}", arg[iarg]);
     }
   }
+  if (friction > 0.0 && contact == CONTACT_OFF && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid friction {} has no effect with contact off (bodies do not "
+                   "touch): use contact solid or paper",
+                   friction);
   if (astress_flag && astress_dp >= KERNEL_SUPPORT * h0)
     error->all(FLERR,
                "Pair esph/solid artstress spacing dp = {} must be below the kernel support "
@@ -812,6 +831,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   double wdp_inv0 = 0.0;
   constexpr int AST = EXTRA & EXTRA_ASTRESS;
   constexpr int XSPH = EXTRA & EXTRA_XSPH;
+  constexpr int FRIC = BND && (EXTRA & EXTRA_FRICTION);
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -923,10 +943,14 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
       double nc[3] = {0.0, 0.0, 0.0};
       double vn = 0.0, xn = 0.0;
+      double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
         vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
+        // the slip velocity (of i against j) for friction
+        if (FRIC)
+          for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
         // only the normal relative velocity couples across the interface
         vij[0] = vn * nc[0];
         vij[1] = vn * nc[1];
@@ -1002,6 +1026,20 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         ff[0] = fn * nc[0];
         ff[1] = fn * nc[1];
         ff[2] = fn * nc[2];
+        if (FRIC) {
+          // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
+          // to each particle (below the slip speed at which that force would reverse the
+          // slip, the force that stops it)
+          const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
+          if (vt2 > 0.0) {
+            const double vtm = sqrt(vt2);
+            const double fstick = mm / (mi + mj) * vtm / (STICK_SHARE * dt);
+            const double ft = std::min(-friction * fn, fstick);
+            const double s = ft / vtm;
+            for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
+            avh += 0.5 * ft * vtm / mm;
+          }
+        }
         // transmitted compressive normal force; with newton off a pair with a ghost
         // partner is seen by two ranks
         const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
@@ -1110,18 +1148,32 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
 
 template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
 {
-  switch ((astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0)) {
+  const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0);
+  // friction acts between bodies only: with boundary particles
+  if constexpr (BND) {
+    if (friction > 0.0 && contact != CONTACT_OFF) {
+      pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
+      return;
+    }
+  }
+  pair_loop_select<BND, HVAR, HEAT, CORR, 0>(extra);
+}
+
+template <int BND, int HVAR, int HEAT, int CORR, int FRICTION>
+void PairESPHSolid::pair_loop_select(int extra)
+{
+  switch (extra) {
     case 0:
-      pair_loop<BND, HVAR, HEAT, CORR, 0>();
+      pair_loop<BND, HVAR, HEAT, CORR, FRICTION>();
       break;
     case EXTRA_ASTRESS:
-      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_ASTRESS>();
+      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_ASTRESS>();
       break;
     case EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_XSPH>();
       break;
     default:
-      pair_loop<BND, HVAR, HEAT, CORR, EXTRA_ASTRESS | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_ASTRESS | EXTRA_XSPH>();
       break;
   }
 }

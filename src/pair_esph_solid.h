@@ -79,6 +79,7 @@ class PairESPHSolid : public Pair {
   double astress_dp;     // the initial particle spacing dp
   int xsph_flag;         // XSPH: particles move with the velocity smoothed over their body
   double xsph_eps;       // its strength
+  double friction;       // Coulomb friction coefficient between bodies (0: frictionless)
 
   // per-type material
   ESPH::EOS *eos;
@@ -136,6 +137,7 @@ class PairESPHSolid : public Pair {
   void atom_contact_clear();
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
+  template <int BND, int HVAR, int HEAT, int CORR, int FRICTION> void pair_loop_select(int);
   template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
 };
 

@@ -161,6 +161,10 @@ CASES = [
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),
     ("ps_onset_default", [K("pair", " onset 10")], "same"),
+    ("ps_friction_missing", [K("pair", " friction")], "error:missing argument"),
+    ("ps_friction_negative", [K("pair", " friction -0.1")], "error:friction coefficient must be"),
+    ("ps_friction_text", [K("pair", " friction rough")], "error:Expected floating point"),
+    ("ps_friction_default", [K("pair", " friction 0")], "same"),
     # ---------------- pair_coeff ----------------
     ("pc_missing", [D("coeff")], "error:coeffs are not set"),
     ("pc_one_type_only", [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 " + MG)],
