@@ -82,11 +82,14 @@ static constexpr double GAP_NONE = 1.0e30;
 
 /* candidate gap between boundary particles a and b of different bodies: xab = x_b - x_a,
    vab = v_b - v_a. Returns false when they do not face each other; else the gap g, its
-   rate gdot and the alignment score c = 1 + |g| / r (1 + 1 for coincident particles),
-   larger is better; 0 means no candidate */
+   rate gdot and the alignment score c = 1 + (|g| + eps) / (r + eps), larger is better:
+   2 for partners straight across, and for coincident ones. The length eps (a millionth
+   of the smoothing length) makes the score continuous at r = 0: two boundary particles
+   that coincide in exact arithmetic (touching faces) are a round-off distance apart in a
+   rotated scene, where |g| / r alone would be 0 / 0 */
 
 inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,
-                            const double *vab, double &c, double &g, double &gdot)
+                            const double *vab, double eps, double &c, double &g, double &gdot)
 {
   const double m[3] = {na[0] - nb[0], na[1] - nb[1], na[2] - nb[2]};
   const double m2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
@@ -94,23 +97,60 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
   const double inv = 1.0 / sqrt(m2);
   g = (xab[0] * m[0] + xab[1] * m[1] + xab[2] * m[2]) * inv;
   gdot = (vab[0] * m[0] + vab[1] * m[1] + vab[2] * m[2]) * inv;
-  const double r2 = xab[0] * xab[0] + xab[1] * xab[1] + xab[2] * xab[2];
-  c = (r2 > 0.0) ? 1.0 + fabs(g) / sqrt(r2) : 2.0;
+  const double r = sqrt(xab[0] * xab[0] + xab[1] * xab[1] + xab[2] * xab[2]);
+  c = 1.0 + (fabs(g) + eps) / (r + eps);
   return true;
 }
 
-/* keep the better of two candidates (c, g, gdot): larger c, then smaller g, then
-   smaller gdot. A total order, so the result does not depend on the order in which the
-   pairs are visited: the same on any number of MPI ranks, and mirror-symmetric scenes
-   stay symmetric */
+/* the gap of a boundary particle is the mean over its candidates weighted by
+   exp(KAPPA (c - c_max)): the candidate most nearly straight across decides, candidates
+   whose score is within about 1/KAPPA of it share (two partners placed alike, e.g. by
+   the symmetry of an edge). A continuous function of the candidates, unlike taking the
+   best one: a near tie broken by round-off (a rotated scene, another MPI decomposition)
+   moves the gap by round-off, not by the difference of the two candidates. On two flat
+   faces every candidate has the same gap. The state best[4] = {c_max, sum w, sum w g,
+   sum w gdot} (sum w = 0: no candidate) is updated one candidate at a time, and two
+   partial states (other MPI ranks) merge, in any order, to the same result up to
+   round-off. */
+
+static constexpr double GAP_KAPPA = 200.0;
+static constexpr int GAP_SLOTS = 4;
+
+inline void contact_bnd_merge(double *best, const double *other)
+{
+  if (other[1] <= 0.0) return;
+  if (best[1] <= 0.0) {
+    for (int k = 0; k < GAP_SLOTS; k++) best[k] = other[k];
+    return;
+  }
+  if (other[0] > best[0]) {
+    const double s = exp(GAP_KAPPA * (best[0] - other[0]));
+    best[0] = other[0];
+    best[1] = best[1] * s + other[1];
+    best[2] = best[2] * s + other[2];
+    best[3] = best[3] * s + other[3];
+  } else {
+    const double s = exp(GAP_KAPPA * (other[0] - best[0]));
+    best[1] += other[1] * s;
+    best[2] += other[2] * s;
+    best[3] += other[3] * s;
+  }
+}
 
 inline void contact_bnd_keep(double *best, double c, double g, double gdot)
 {
-  if (c > best[0] || (c == best[0] && (g < best[1] || (g == best[1] && gdot < best[2])))) {
-    best[0] = c;
-    best[1] = g;
-    best[2] = gdot;
-  }
+  const double one[GAP_SLOTS] = {c, 1.0, g, gdot};
+  contact_bnd_merge(best, one);
+}
+
+/* the gap and its rate of a boundary particle from its state; false: no candidate */
+
+inline bool contact_bnd_result(const double *best, double &g, double &gdot)
+{
+  if (best[1] <= 0.0) return false;
+  g = best[2] / best[1];
+  gdot = best[3] / best[1];
+  return true;
 }
 
 /* gap of a pair of real particles of different bodies from their own gaps */

@@ -62,6 +62,12 @@ static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i
 static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles with a gap
 static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
 static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
+// end of the gap slots, communicated together: A_GW..A_GV of real particles (slot 31
+// unused), B_GAP..B_GAP+3 of boundary particles
+static constexpr int GAP_END = 32;
+// length that regularises the alignment score of two boundary particles, and below which
+// an open gap counts as touching (round-off of coinciding faces), in h0
+static constexpr double GAP_EPS = 1.0e-6;
 
 // optional pair terms, bits of the last template parameter of pair_loop()
 static constexpr int EXTRA_ASTRESS = 1;
@@ -77,7 +83,7 @@ static constexpr int B_VSUM = 12;    // 12..14: sum_p V_p W_kp v_p
 static constexpr int B_WSUM = 15;    // sum_p V_p W_kp
 static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
 static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
-static constexpr int B_GAP = 28;     // 28..30: best facing partner: score, gap, gap rate
+static constexpr int B_GAP = 28;     // 28..31: facing partners (contact_bnd_merge)
 
 // slots of the hoisted array hq[i][*]
 static constexpr int Q_V = 0;    // 0..2 predicted velocity
@@ -792,12 +798,12 @@ static inline void add_gap_sums(double *ap, double w, const double *qk, double d
 ------------------------------------------------------------------------- */
 
 static inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double *qj,
-                                const double *dx)
+                                const double *dx, double eps)
 {
   const double xab[3] = {-dx[0], -dx[1], -dx[2]};
   const double vab[3] = {qj[Q_V] - qi[Q_V], qj[Q_V + 1] - qi[Q_V + 1], qj[Q_V + 2] - qi[Q_V + 2]};
   double c, g, gd;
-  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, c, g, gd)) return;
+  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, c, g, gd)) return;
   contact_bnd_keep(ai + B_GAP, c, g, gd);
   if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
 }
@@ -825,6 +831,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   const double norm0 = kernel_norm(kernel, dim, h0);
   const double hinv0 = 1.0 / h0;
   const double gap_cap = gaptol * h0;
+  const double gap_eps = GAP_EPS * h0;
   const double dt = dt_step;
   const int solid = (contact == CONTACT_SOLID);
   // artificial stress: 1 / W(dp) at constant h
@@ -867,7 +874,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       if (BND && mi == 0.0 && mj == 0.0) {
         // two boundary particles: the surface gap between different bodies
         if (solid && bi != body[j])
-          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx);
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
+                       gap_eps);
         continue;
       }
       const double *qj = hq[j];
@@ -1002,7 +1010,9 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           // the gaps of both particles, brought to the present with their rates
           const double gap =
               contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
-          if (gap <= 0.0 && count_pair) {
+          // touching: closed, or open by no more than round-off (faces that coincide in exact
+          // arithmetic are a round-off distance apart in a rotated scene)
+          if (gap <= gap_eps && count_pair) {
             ntouch_pairs++;
             tally_bodies(bi, body[j])[0] += 1.0;
           }
@@ -1364,7 +1374,7 @@ void PairESPHSolid::store_normal(int i)
   // engagement for the next computation, from the gap it will see; the stored value is
   // the one this computation used until now (hoisted)
   state->eng[i] = (contact == CONTACT_SOLID)
-      ? contact_engage(hq[i][Q_ENG], state->gap[i] + dt_step * state->gapv[i], onset)
+      ? contact_engage(hq[i][Q_ENG], state->gap[i] + dt_step * state->gapv[i] - GAP_EPS * h0, onset)
       : 0.0;
 }
 
@@ -1387,11 +1397,7 @@ std::array<double, 3> &PairESPHSolid::tally_bodies(int a, int b)
 
 void PairESPHSolid::store_bnd_gap(int i)
 {
-  const double *b = acc[i] + B_GAP;
-  if (b[0] > 0.0) {
-    state->gap[i] = b[1];
-    state->gapv[i] = b[2];
-  } else {
+  if (!contact_bnd_result(acc[i] + B_GAP, state->gap[i], state->gapv[i])) {
     state->gap[i] = GAP_NONE;
     state->gapv[i] = 0.0;
   }
@@ -1428,7 +1434,7 @@ void PairESPHSolid::compute_normals()
   comm->forward_comm(this, 7);
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
-    for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+    for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
   }
 
   // pass 1: normal sums of real particles, gaps of boundary particles
@@ -1442,7 +1448,8 @@ void PairESPHSolid::compute_normals()
       if (rsq >= cutsq_global) continue;
       if (rmass[i] == 0.0 && rmass[j] == 0.0) {
         if (solid && body[i] != body[j])
-          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx);
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx,
+                       GAP_EPS * h0);
         continue;
       }
       if (rmass[i] > 0.0 && rmass[j] > 0.0) continue;
@@ -1460,7 +1467,7 @@ void PairESPHSolid::compute_normals()
   }
   if (newton_pair) {
     comm_stage = COMM_NORMALS;
-    comm->reverse_comm(this, 8);
+    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW));
   }
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) {
@@ -1468,7 +1475,7 @@ void PairESPHSolid::compute_normals()
       hq[i][Q_GAP] = state->gap[i];
       hq[i][Q_GAPV] = state->gapv[i];
     } else {
-      for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+      for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
     }
   }
 
@@ -1477,7 +1484,7 @@ void PairESPHSolid::compute_normals()
     comm_stage = COMM_GAPS;
     comm->forward_comm(this, 2);
     for (int i = nlocal; i < nall; i++)
-      for (int k = A_GW; k <= A_GV; k++) acc[i][k] = 0.0;
+      for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       const int *jlist = list->firstneigh[i];
@@ -1501,7 +1508,7 @@ void PairESPHSolid::compute_normals()
     }
     if (newton_pair) {
       comm_stage = COMM_GAPS;
-      comm->reverse_comm(this, 3);
+      comm->reverse_comm(this, GAP_END - A_GW);
     }
   }
   for (int i = 0; i < nlocal; i++) {
@@ -1625,9 +1632,9 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     const double *a = acc[i];
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) buf[m++] = a[k];
-      for (int k = A_GW; k <= A_GV; k++) buf[m++] = a[k];
+      for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_GAPS) {
-      for (int k = A_GW; k <= A_GV; k++) buf[m++] = a[k];
+      for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
     } else {
       for (int k = 0; k < nreverse; k++) buf[m++] = a[k];
     }
@@ -1655,17 +1662,17 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) a[k] += buf[m++];
       k0 = A_GW;
-      k1 = A_GV + 1;
+      k1 = GAP_END;
     } else if (comm_stage == COMM_GAPS) {
       k0 = A_GW;
-      k1 = A_GV + 1;
+      k1 = GAP_END;
     }
     const int gaps = (k1 > A_GW) && (rmass[j] == 0.0);
     for (int k = k0; k < k1; k++) {
       if (gaps && k == B_GAP) {
-        contact_bnd_keep(a + B_GAP, buf[m], buf[m + 1], buf[m + 2]);
-        m += 3;
-        k += 2;
+        contact_bnd_merge(a + B_GAP, buf + m);
+        m += GAP_SLOTS;
+        k += GAP_SLOTS - 1;
       } else {
         a[k] += buf[m++];
       }

@@ -52,7 +52,7 @@ class PairESPHSolid : public Pair {
   bool geometry_used(int, double *) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
-  static constexpr int NACC = 31;
+  static constexpr int NACC = 32;
   // hoisted per-particle quantities sent to ghosts every step
   static constexpr int NHQ = 20;
   // more hoisted quantities per atom with the artificial stress (R and its flag)

@@ -231,40 +231,74 @@ TEST(Contact, NormalGapWeight)
   const double vab[3] = {-3.0, 1.0, 0.0};    // b approaches at 3, slides at 1
   double c, g, gd;
   const double xab[3] = {0.2, 0.7, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, 0.2);
   EXPECT_DOUBLE_EQ(gd, -3.0);
   EXPECT_NEAR(c, 1.0 + 0.2 / sqrt(0.53), 1e-15);
   // seen from b: the same gap and rate
   const double xba[3] = {-0.2, -0.7, 0.0}, vba[3] = {3.0, -1.0, 0.0};
   double c2, g2, gd2;
-  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, c2, g2, gd2));
+  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, 0.0, c2, g2, gd2));
   EXPECT_DOUBLE_EQ(g2, g);
   EXPECT_DOUBLE_EQ(gd2, gd);
   EXPECT_DOUBLE_EQ(c2, c);
   // a face rotated by 30 degrees: still the face distance
   const double t = M_PI / 6, ra[3] = {cos(t), sin(t), 0}, rb[3] = {-cos(t), -sin(t), 0};
   const double xr[3] = {0.2 * cos(t) - 0.7 * sin(t), 0.2 * sin(t) + 0.7 * cos(t), 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, 0.0, c, g, gd));
   EXPECT_NEAR(g, 0.2, 1e-15);
   // overlap: negative gap
   const double xo[3] = {-0.1, 0.0, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, 0.0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, -0.1);
   EXPECT_DOUBLE_EQ(c, 2.0);
+  // coincident partners score 2 and so do partners a round-off distance apart (a rotated
+  // scene): the score is continuous at r = 0
+  const double x0[3] = {0.0, 0.0, 0.0}, xeps[3] = {1e-19, -2e-19, 3e-20};
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, x0, vab, 1e-6, c, g, gd));
+  EXPECT_DOUBLE_EQ(c, 2.0);
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xeps, vab, 1e-6, c2, g2, gd2));
+  EXPECT_NEAR(c2, 2.0, 1e-12);
   // side by side surfaces (normals within 60 degrees) do not face each other
   const double ns[3] = {cos(0.9), sin(0.9), 0.0};
-  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, c, g, gd));
+  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, 0.0, c, g, gd));
 
-  // the better candidate: larger alignment, then the smaller gap; order independent
-  double best1[3] = {0, 0, 0}, best2[3] = {0, 0, 0};
+  // the candidates' mean weighted by exp(KAPPA (c - c_max)): a tie shares, a clearly worse
+  // candidate (0.4 below) does not count; any order, and split into partial states merged
+  // later (MPI), gives the same result to round-off
   const double cand[3][3] = {{1.5, 0.3, 1.0}, {1.9, 0.4, 2.0}, {1.9, 0.2, 3.0}};
+  double best1[GAP_SLOTS] = {0, 0, 0, 0}, best2[GAP_SLOTS] = {0, 0, 0, 0};
+  double part_a[GAP_SLOTS] = {0, 0, 0, 0}, part_b[GAP_SLOTS] = {0, 0, 0, 0};
   for (int k = 0; k < 3; k++) contact_bnd_keep(best1, cand[k][0], cand[k][1], cand[k][2]);
   for (int k = 2; k >= 0; k--) contact_bnd_keep(best2, cand[k][0], cand[k][1], cand[k][2]);
-  for (int k = 0; k < 3; k++) {
-    EXPECT_EQ(best1[k], cand[2][k]);
-    EXPECT_EQ(best2[k], cand[2][k]);
+  contact_bnd_keep(part_a, cand[1][0], cand[1][1], cand[1][2]);
+  contact_bnd_keep(part_b, cand[0][0], cand[0][1], cand[0][2]);
+  contact_bnd_keep(part_b, cand[2][0], cand[2][1], cand[2][2]);
+  contact_bnd_merge(part_a, part_b);
+  const double w0 = exp(GAP_KAPPA * (1.5 - 1.9));
+  const double gref = (0.4 + 0.2 + w0 * 0.3) / (2.0 + w0);
+  const double dref = (2.0 + 3.0 + w0 * 1.0) / (2.0 + w0);
+  for (const double *b : {best1, best2, part_a}) {
+    double gg, dd;
+    ASSERT_TRUE(contact_bnd_result(b, gg, dd));
+    EXPECT_NEAR(gg, gref, 1e-15);
+    EXPECT_NEAR(dd, dref, 1e-15);
+    EXPECT_NEAR(gg, 0.3, 1e-15);
   }
+  // a near tie moves the gap continuously: a score change of 1e-12 changes it by ~1e-11
+  double tie1[GAP_SLOTS] = {0, 0, 0, 0}, tie2[GAP_SLOTS] = {0, 0, 0, 0};
+  contact_bnd_keep(tie1, 1.8, 0.0, 0.0);
+  contact_bnd_keep(tie1, 1.8, -0.5, 0.0);
+  contact_bnd_keep(tie2, 1.8 + 1e-12, 0.0, 0.0);
+  contact_bnd_keep(tie2, 1.8, -0.5, 0.0);
+  double g1, gt2, d1;
+  ASSERT_TRUE(contact_bnd_result(tie1, g1, d1));
+  ASSERT_TRUE(contact_bnd_result(tie2, gt2, d1));
+  EXPECT_NEAR(g1, -0.25, 1e-15);
+  EXPECT_LT(fabs(g1 - gt2), 1e-10);
+  // no candidate
+  const double none[GAP_SLOTS] = {0, 0, 0, 0};
+  EXPECT_FALSE(contact_bnd_result(none, g1, d1));
 
   // the pair's gap: either particle's closed gap closes it
   EXPECT_EQ(contact_gap_pair(0.3, -0.1), -0.1);
