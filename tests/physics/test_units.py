@@ -3,8 +3,9 @@
 
 Scene (3D, coarse): an iron block (Mie-Grueneisen, von Mises yield 0.3 GPa with linear
 hardening, so that it deforms plastically) strikes an aluminum block (linear EOS) at
-100 m/s across an initial gap of 0.1 spacings; artificial heat transfer on, CFL time
-step, and a stock fix addforce pushing on the target. Every input of the si scene is
+100 m/s across an initial gap of 0.1 spacings; artificial heat transfer on, Coulomb
+friction 0.3 (the blocks' different lateral expansion slides the faces: it changes ke by
+1e-3), CFL time step, and a stock fix addforce pushing on the target. Every input of the si scene is
 converted to metal and to real by Python (below), with the unit system that LAMMPS's
 own constants define (see UNITS); then the outputs are converted back and compared:
 positions, velocities, per-atom density, specific energy, deviatoric stress, plastic
@@ -98,7 +99,7 @@ create_atoms 2 region b2
 group A region b1
 group B region b2
 displace_atoms B move {gap!r} 0 0 units box
-pair_style esph/solid {dx!r} heat 0.1 0.1
+pair_style esph/solid {dx!r} heat 0.1 0.1 friction 0.3
 pair_coeff 1 1 rho0 {rho_fe!r} shear {G_fe!r} eos mie/gruneisen {c0_fe!r} 1.92 1.69 &
            yield {Y_fe!r} hardening {H_fe!r}
 pair_coeff 2 2 rho0 {rho_al!r} shear {G_al!r} eos linear {K_al!r}
