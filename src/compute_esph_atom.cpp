@@ -140,7 +140,9 @@ void ComputeESPHAtom::compute_peratom()
     const ESPH::EOS &eq = eos[type[i]];
     const double rho = state->rho[i];
     double P, c2;
-    eq.compute(rho, state->e[i], P, c2);
+    eq.compute(rho, state->e[i] * pair->units.energy_in, P, c2);
+    // in pressure units, as the stress d2_esph_s
+    P *= pair->units.pressure;
     const double *s = state->s[i];
     const double s2 =
         s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);

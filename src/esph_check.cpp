@@ -19,6 +19,7 @@
 #include "error.h"
 #include "esph_eos.h"
 #include "esph_state.h"
+#include "esph_units.h"
 #include "fix.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -121,7 +122,8 @@ std::string ESPHCheck::format_bodies(const std::map<int, bigint> &counts)
 
 /* ---------------------------------------------------------------------- */
 
-void ESPHCheck::state(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double hlimit)
+void ESPHCheck::state(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double hlimit,
+                      const ESPH::Units &units)
 {
   Atom *atom = lmp->atom;
   st->fetch();
@@ -185,7 +187,8 @@ void ESPHCheck::state(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double h
                           t, st->epsp[i]);
         if (m.empty()) {
           double P, c2;
-          eos[type[i]].compute(rho, e, P, c2);
+          eos[type[i]].compute(rho, e * units.energy_in, P, c2);
+          P *= units.pressure;
           if (!std::isfinite(P) || !(c2 > 0.0) || !std::isfinite(c2))
             m = fmt::format("Atom {} (type {}) has no sound speed: its EOS gives P = {} and c^2 = "
                             "{} at density {} and energy {}; the state is outside the EOS",

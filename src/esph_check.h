@@ -31,7 +31,8 @@
 
 namespace ESPH {
 struct EOS;
-}
+struct Units;
+}    // namespace ESPH
 
 namespace LAMMPS_NS {
 class LAMMPS;
@@ -57,8 +58,9 @@ namespace ESPHCheck {
   // per-atom state at the start of a run: real particles need finite x, v, e and
   // stress, density and h > 0 and finite, and a positive sound speed from their EOS;
   // boundary particles finite x and v and a unit normal; hlimit: the largest h the
-  // cutoff allows
-  void state(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double hlimit);
+  // cutoff allows; units: of the pair style (the EOS works in internal units)
+  void state(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double hlimit,
+             const ESPH::Units &units);
 
   // pass over the half neighbour list: coincident real particles (closer than
   // COINCIDENT x h0), and with a kernel dimension below the box dimension,

@@ -136,6 +136,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   nforward = nreverse = 0;
 
   state = new ESPHState(lmp);
+  units.set(force->ftm2v, force->mvv2e, force->nktv2p);
 }
 
 /* ----------------------------------------------------------------------
@@ -459,6 +460,10 @@ void PairESPHSolid::coeff(int narg, char **arg)
   if (H > 0.0 && Y <= 0.0)
     error->all(FLERR, "Pair esph/solid hardening {} needs a yield stress > 0 (keyword yield)", H);
   eq.rho0 = rho0;
+  // the EOS works in internal units; G, yield and hardening stay in pressure units, like
+  // the stress they act on (d2_esph_s)
+  units.set(force->ftm2v, force->mvv2e, force->nktv2p);
+  if (eq.type == EOS_LINEAR) eq.K *= units.pressure_in;
   // plasticity carries the equivalent plastic strain per atom
   if (Y > 0.0) ESPHState::ensure_plastic(lmp);
 
@@ -484,11 +489,15 @@ void PairESPHSolid::coeff(int narg, char **arg)
 
 void PairESPHSolid::init_style()
 {
-  if (force->mvv2e != 1.0 || force->ftm2v != 1.0 || force->nktv2p != 1.0)
+  // the conversion is generic (esph_units.h), but only these unit styles are tested
+  const std::string ustyle = update->unit_style;
+  if (ustyle != "si" && ustyle != "metal" && ustyle != "real" && ustyle != "cgs" &&
+      ustyle != "micro" && ustyle != "nano" && ustyle != "lj")
     error->all(FLERR, Error::NOLASTLINE,
-               "Pair esph/solid requires a unit style without conversion factors (si, cgs, micro, "
-               "nano or lj), not units {}",
-               update->unit_style);
+               "Pair esph/solid does not support units {}: expected units si, metal, real, cgs, "
+               "micro, nano or lj",
+               ustyle);
+  units.set(force->ftm2v, force->mvv2e, force->nktv2p);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
   auto fixes = modify->get_fix_by_style("^esph/integrate$");
@@ -558,7 +567,7 @@ void PairESPHSolid::setup()
     if (state->h[i] == 0.0) state->h[i] = h0;
   }
   // the state the run starts from, and the arrangement of the particles (one pass each)
-  ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT);
+  ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT, units);
   ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim);
   if (contact != CONTACT_OFF)
     ESPHCheck::contact_bodies(lmp, state, contact == CONTACT_PAPER ? "paper" : "solid");
@@ -621,6 +630,8 @@ void PairESPHSolid::hoist()
   // inside a step the integrator has predicted the state at its end
   double **pred = pred_valid ? fix_int->pred : nullptr;
   const double hlimit = cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12);
+  // internal units from here on: sigma/rho^2, e and c (esph_units.h)
+  const double ein = units.energy_in, pin = units.pressure_in;
 
   double dtmin = BIG_DT;
   for (int i = 0; i < nlocal; i++) {
@@ -640,7 +651,7 @@ void PairESPHSolid::hoist()
     if (rmass[i] > 0.0) {
       const int itype = type[i];
       const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
-      const double e = p ? p[FixESPHIntegrate::P_E] : state->e[i];
+      const double e = (p ? p[FixESPHIntegrate::P_E] : state->e[i]) * ein;
       const double h = p ? p[FixESPHIntegrate::P_H] : state->h[i];
       const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
       double P, c2;
@@ -651,15 +662,15 @@ void PairESPHSolid::hoist()
       q[Q_RHO] = rho;
       q[Q_C] = c;
       q[Q_H] = h;
-      q[Q_A] = (sp[0] - P) * inv;
-      q[Q_A + 1] = (sp[1] - P) * inv;
-      q[Q_A + 2] = (sp[2] - P) * inv;
-      q[Q_A + 3] = sp[3] * inv;
-      q[Q_A + 4] = sp[4] * inv;
-      q[Q_A + 5] = sp[5] * inv;
+      q[Q_A] = (sp[0] * pin - P) * inv;
+      q[Q_A + 1] = (sp[1] * pin - P) * inv;
+      q[Q_A + 2] = (sp[2] * pin - P) * inv;
+      q[Q_A + 3] = sp[3] * pin * inv;
+      q[Q_A + 4] = sp[4] * pin * inv;
+      q[Q_A + 5] = sp[5] * pin * inv;
       q[Q_E] = e;
       // CFL with the longitudinal wave speed
-      const double cl = sqrt(c2 + 4.0 * shear[itype] / (3.0 * rho));
+      const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
       const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
       double dti = h / (cl + vmag);
       if (heat_flag) {
@@ -833,6 +844,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   const double gap_cap = gaptol * h0;
   const double gap_eps = GAP_EPS * h0;
   const double dt = dt_step;
+  // pair forces in force units (atom->f, the contact force); all else internal
+  const double fconv = units.force;
   const int solid = (contact == CONTACT_SOLID);
   // artificial stress: 1 / W(dp) at constant h
   double wdp_inv0 = 0.0;
@@ -997,7 +1010,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         Tg[2] += Rg[2];
         avh -= 0.5 * (vij[0] * Rg[0] + vij[1] * Rg[1] + vij[2] * Rg[2]);
       }
-      const double mm = mi * mj;
+      const double mm = mi * mj * fconv;
       double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
                       mm * (Tg[2] - pi_ij * g[2])};
 
@@ -1269,8 +1282,10 @@ void PairESPHSolid::finalize(int eflag)
       drho[i] = -(a[0] + a[4] + a[8]);
       // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, plus viscous heating and heat transfer
       const double *A = q + Q_A;
-      de[i] = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
-          A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]) + a[A_AVHEAT] + a[A_HEAT];
+      // (in energy/mass units per time, as d_esph_e is stored)
+      de[i] = (A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
+               A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]) + a[A_AVHEAT] + a[A_HEAT]) *
+          units.energy;
       // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
       // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
       bool corrected = false;
@@ -1293,7 +1308,7 @@ void PairESPHSolid::finalize(int eflag)
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
       if (bnd) store_normal(i);
       if (eflag) {
-        const double ei = rmass[i] * q[Q_E];
+        const double ei = rmass[i] * q[Q_E] * units.energy;
         esum += ei;
         if (eflag_atom) eatom[i] += ei;
       }

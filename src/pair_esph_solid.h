@@ -23,6 +23,7 @@ PairStyle(esph/solid,PairESPHSolid);
 #include "pair.h"
 
 #include "esph_eos.h"
+#include "esph_units.h"
 
 #include <array>
 #include <map>
@@ -87,6 +88,9 @@ class PairESPHSolid : public Pair {
   double *yield;        // von Mises yield stress, 0 = elastic (no plasticity)
   double *hardening;    // linear isotropic hardening modulus (d yield / d plastic strain)
   int *matset;
+  // LAMMPS's force, energy and pressure units <-> the internal mechanical units; the EOS
+  // works in the internal ones (its bulk modulus K is converted by pair_coeff)
+  ESPH::Units units;
 
   // per-atom work arrays
   int nmax;

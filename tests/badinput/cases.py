@@ -23,6 +23,8 @@ What is accepted (legal input that runs) and why:
   * the ESPH styles in any order the docs allow (fix before pair_style, all fixes first):
     the same state fixes are made whichever style comes first, the answer is the same
   * units lj and cgs with SI numbers: no conversion factors, the same numbers
+  * units metal and real with SI numbers: another scene (the numbers are read in those
+    units), which runs
   * atom styles with per-atom mass (sphere) or without (charge, full): the package adds
     rmass when missing; boundary particles of another atom type; no atom map
   * a second fix esph/boundary on the same group: it finds the existing boundary
@@ -355,8 +357,12 @@ CASES = [
     ("st_state_set_by_hand", [B("pair", "fix mine all property/atom d_esph_rho")],
      "error:must not be defined by hand"),
     # ---------------- units, dimension, atom style, boundary ----------------
-    ("un_metal", [R("units", "units metal")], "error:not units metal"),
-    ("un_real", [R("units", "units real")], "error:not units real"),
+    # metal and real are converted (tests/physics/test_units.py checks the physics):
+    # the SI numbers mean another scene there, which runs; electron is not supported
+    ("un_metal", [R("units", "units metal")], "runs"),
+    ("un_real", [R("units", "units real")], "runs"),
+    ("un_electron", [R("units", "units electron")],
+     "error:does not support units electron: expected units si, metal, real"),
     ("un_lj", [R("units", "units lj"), R("lattice", "lattice sc 1e12 origin 0.5 0.5 0.5")],
      "runs"),
     ("un_cgs", [R("units", "units cgs")], "same"),

@@ -195,7 +195,7 @@ TEST_F(ESPHTest, ComputeAtomBadInput)
 TEST_F(ESPHTest, WrongUnits)
 {
   BEGIN_HIDE_OUTPUT();
-  command("units metal");
+  command("units electron");
   command("region box block 0 10 0 10 0 10");
   command("create_box 1 box");
   command("create_atoms 1 single 5 5 5");
@@ -204,8 +204,8 @@ TEST_F(ESPHTest, WrongUnits)
   command("fix 1 all esph/integrate");
   command("set group all mass 1.0");
   END_HIDE_OUTPUT();
-  TEST_FAILURE(".*ERROR: Pair esph/solid requires a unit style without conversion factors.*not "
-               "units metal.*",
+  TEST_FAILURE(".*ERROR: Pair esph/solid does not support units electron: expected units si, "
+               "metal, real, cgs, micro, nano or lj.*",
                command("run 0 post no"););
 }
 

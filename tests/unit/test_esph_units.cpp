@@ -1,10 +1,11 @@
 // Unit tests of the LAMMPS-independent pieces of the ESPH package:
-// kernel, equation of state, Jaumann stress rate, contact rule.
+// kernel, equation of state, Jaumann stress rate, contact rule, unit conversion.
 
 #include "esph_contact.h"
 #include "esph_eos.h"
 #include "esph_kernel.h"
 #include "esph_strength.h"
+#include "esph_units.h"
 
 #include "gtest/gtest.h"
 
@@ -370,4 +371,27 @@ TEST(Strength, RadialReturnHardening)
   radial_return(a, Y0);
   radial_return(b, Y0, 0.0, G, 0.5);
   for (int k = 0; k < 6; k++) EXPECT_DOUBLE_EQ(a[k], b[k]);
+}
+
+// Unit conversion: with LAMMPS's constants of units si (all 1) every factor is exactly 1.0
+// (results bitwise those without conversion); in metal the internal pressure unit
+// (g/mol)/(Angstrom ps^2) is mvv2e nktv2p = 166.05 bar, force and energy agree
+// (ftm2v = 1/mvv2e: force = energy/distance), and the factors invert each other
+TEST(Units, SiIsIdentityMetalFactors)
+{
+  Units u;
+  u.set(1.0, 1.0, 1.0);
+  EXPECT_EQ(u.force, 1.0);
+  EXPECT_EQ(u.energy, 1.0);
+  EXPECT_EQ(u.pressure, 1.0);
+  EXPECT_EQ(u.energy_in, 1.0);
+  EXPECT_EQ(u.pressure_in, 1.0);
+  const double mvv2e = 1.0364269e-4, nktv2p = 1.6021765e6;
+  u.set(1.0 / mvv2e, mvv2e, nktv2p);
+  EXPECT_NEAR(u.pressure, 166.0539, 1e-4);
+  EXPECT_NEAR(u.force / u.energy, 1.0, 1e-15);
+  EXPECT_NEAR(u.energy * u.energy_in, 1.0, 1e-15);
+  EXPECT_NEAR(u.pressure * u.pressure_in, 1.0, 1e-15);
+  // a stress of 1 GPa = 1e4 bar in internal units, and back
+  EXPECT_NEAR(1.0e4 * u.pressure_in * u.pressure, 1.0e4, 1e-11);
 }
