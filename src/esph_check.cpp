@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <unordered_map>
 
 using namespace LAMMPS_NS;
@@ -307,6 +308,45 @@ void ESPHCheck::integrators(LAMMPS *lmp, Fix *fix_int, int move)
                         "Fix esph/integrate {} has move no but no other fix moves its atoms: "
                         "the particles stay where they are (use move yes, or add e.g. fix move)",
                         fix_int->id);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::rigid_bodies(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int *rigid)
+{
+  const int *mask = lmp->atom->mask;
+  const int *type = lmp->atom->type;
+  const tagint *tag = lmp->atom->tag;
+  const int nlocal = lmp->atom->nlocal;
+  st->fetch();
+  tagint bad = 0;
+  std::string msg;
+  std::vector<int> rbodies, dbodies;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(st->rmass[i] > 0.0)) continue;
+    if (!rigid[type[i]]) {
+      dbodies.push_back(st->body[i]);
+      continue;
+    }
+    rbodies.push_back(st->body[i]);
+    if ((mask[i] & fix_int->groupbit) && (bad == 0 || tag[i] < bad)) {
+      bad = tag[i];
+      msg = fmt::format("Atom {} of rigid type {} (pair_coeff ... rigid yes) is in the group "
+                        "of fix esph/integrate {}: a rigid body is not integrated; leave it out "
+                        "of that group and move it with e.g. fix move, or leave it at rest",
+                        tag[i], type[i], fix_int->id);
+    }
+  }
+  first_error(lmp, bad, msg);
+  const auto r = global_set(lmp, rbodies);
+  const auto d = global_set(lmp, dbodies);
+  std::vector<int> both;
+  std::set_intersection(r.begin(), r.end(), d.begin(), d.end(), std::back_inserter(both));
+  if (!both.empty())
+    lmp->error->all(FLERR, Error::NOLASTLINE,
+                    "Body {} (i_esph_body) has real particles of rigid and of deformable "
+                    "types: give a rigid body (pair_coeff ... rigid yes) a body ID of its own",
+                    both[0]);
 }
 
 /* ----------------------------------------------------------------------

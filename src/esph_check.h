@@ -75,6 +75,11 @@ namespace ESPHCheck {
   // move no: some other fix should (a warning otherwise)
   void integrators(LAMMPS *lmp, Fix *fix_int, int move);
 
+  // rigid types (pair_coeff ... rigid yes): their real particles must be outside the
+  // group of fix esph/integrate (another fix or nothing moves them), and no body may
+  // mix rigid and deformable real particles
+  void rigid_bodies(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
+
   // median distance from each real particle of the group to its nearest real
   // neighbour of the same body, in units of spacing (all group particles gathered
   // once; capped at MAX_RATIO); -1 if the group has no real particles

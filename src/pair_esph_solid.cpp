@@ -108,10 +108,11 @@ static constexpr double BIG_DT = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
-    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), matset(nullptr),
-    nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr), ds(nullptr),
-    bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0), atom_contact_flag(0),
-    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr)
+    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid(nullptr),
+    matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr),
+    ds(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0),
+    atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
+    fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -189,6 +190,7 @@ PairESPHSolid::~PairESPHSolid()
     memory->destroy(shear);
     memory->destroy(yield);
     memory->destroy(hardening);
+    memory->destroy(rigid);
     memory->destroy(matset);
   }
 }
@@ -207,12 +209,14 @@ void PairESPHSolid::allocate()
   memory->create(shear, n, "pair:shear");
   memory->create(yield, n, "pair:yield");
   memory->create(hardening, n, "pair:hardening");
+  memory->create(rigid, n, "pair:rigid");
   memory->create(matset, n, "pair:matset");
   for (int i = 0; i < n; i++) {
     matset[i] = 0;
     shear[i] = 0.0;
     yield[i] = 0.0;
     hardening[i] = 0.0;
+    rigid[i] = 0;
     eos[i] = EOS{EOS_LINEAR, 0.0, 0.0, 0.0, 0.0, 0.0};
   }
 }
@@ -385,6 +389,7 @@ void PairESPHSolid::coeff(int narg, char **arg)
                arg[0], arg[1]);
 
   double rho0 = -1.0, G = -1.0, Y = 0.0, H = 0.0;
+  int rgd = 0;
   EOS eq{-1, 0.0, 0.0, 0.0, 0.0, 0.0};
   int iarg = 2;
   while (iarg < narg) {
@@ -415,6 +420,10 @@ void PairESPHSolid::coeff(int narg, char **arg)
       if (H < 0.0)
         error->all(FLERR, iarg + 1, "Pair esph/solid hardening modulus must be >= 0, got {}",
                    arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "rigid") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid rigid", error);
+      rgd = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
     } else if (strcmp(arg[iarg], "eos") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_coeff esph/solid eos", error);
@@ -472,6 +481,7 @@ void PairESPHSolid::coeff(int narg, char **arg)
     shear[i] = G;
     yield[i] = Y;
     hardening[i] = H;
+    rigid[i] = rgd;
     matset[i] = 1;
   }
   // every pair of types with materials interacts
@@ -507,6 +517,13 @@ void PairESPHSolid::init_style()
   fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);
   // with move no another fix moves the particles; otherwise no other fix may
   ESPHCheck::integrators(lmp, fix_int, fix_int->move);
+  int nrigid = 0;
+  for (int t = 1; t <= atom->ntypes; t++) nrigid += rigid[t];
+  if (nrigid && contact == CONTACT_OFF)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid rigid types (pair_coeff ... rigid yes) need a contact rule "
+               "(contact solid or paper), not contact off");
+  if (nrigid) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
   if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
     // contact needs boundary particles only when there is more than one body
     int lmin = 1 << 30, lmax = -(1 << 30);
@@ -834,6 +851,9 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   const tagint *tag = atom->tag;
   const double *rmass = state->rmass;
   const int *body = state->body;
+  const int *type = atom->type;
+  int anyrigid = 0;
+  for (int t = 1; t <= atom->ntypes; t++) anyrigid |= rigid[t];
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double cutsq_global = cut_global * cut_global;
@@ -953,21 +973,28 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       }
 
       // two real particles
+      const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
+      // a rigid particle (pair_coeff ... rigid yes) meets only deformable ones of other
+      // bodies, as the mirror image of its partner: stress, sound speed and density of the
+      // partner, twice the normal relative velocity (below): the reaction of a rigid wall
+      const int ri = anyrigid && rigid[type[i]], rj = anyrigid && rigid[type[j]];
+      if ((ri || rj) && (!cross || (ri && rj))) continue;
+      const double *qa = ri ? qj : qi;
+      const double *qb = rj ? qi : qj;
       double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
-      const double *Ai = qi + Q_A;
-      const double *Aj = qj + Q_A;
+      const double *Ai = qa + Q_A;
+      const double *Aj = qb + Q_A;
       const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
                            Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
       double Tg[3] = {T[0] * g[0] + T[3] * g[1] + T[4] * g[2],
                       T[3] * g[0] + T[1] * g[1] + T[5] * g[2],
                       T[4] * g[0] + T[5] * g[1] + T[2] * g[2]};
-      const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
       double nc[3] = {0.0, 0.0, 0.0};
       double vn = 0.0, xn = 0.0;
       double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
-        vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
+        vn = (ri || rj ? 2.0 : 1.0) * (vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2]);
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
         // the slip velocity (of i against j) for friction
         if (FRIC)
@@ -983,8 +1010,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       double pi_ij = 0.0;
       if (vr < 0.0) {
         const double mu = hij * vr / (rsq + eps * hij * hij);
-        pi_ij = (-alpha * 0.5 * (qi[Q_C] + qj[Q_C]) * mu + beta * mu * mu) /
-            (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
+        pi_ij = (-alpha * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + beta * mu * mu) /
+            (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
       }
       // heating by the artificial viscosity and stress, half to each particle
       double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);

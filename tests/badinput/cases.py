@@ -33,6 +33,7 @@ What is accepted (legal input that runs) and why:
   * options that change the physics (kernel wendland, linear EOS, heat, hvar, artstress,
     xsph, gradient corrected, contact paper/off, newton off, yield, shear 0): they run
   * fix esph/integrate move no with fix move: the documented way to prescribe motion
+  * a rigid type (pair_coeff ... rigid yes) left out of the group of fix esph/integrate
 """
 
 BASE = [
@@ -210,6 +211,20 @@ CASES = [
     ("pc_hardening_negative", [K("coeff", " yield 2e8 hardening -1")],
      "error:hardening modulus must be >= 0"),
     ("pc_unknown_keyword", [K("coeff", " young 200e9")], "error:keyword: young"),
+    ("pc_rigid_no_value", [K("coeff", " rigid")], "error:missing argument"),
+    ("pc_rigid_text", [K("coeff", " rigid maybe")], "error:Expected boolean"),
+    ("pc_rigid_no_is_default", [K("coeff", " rigid no")], "same"),
+    ("pc_rigid_in_group", [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes")],
+     "error:is in the group of fix esph/integrate", 2),
+    ("pc_rigid_outside_group", [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG +
+                                  " rigid yes"), R("fix_int", "fix int a esph/integrate")], "runs"),
+    ("pc_rigid_contact_off", [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+                              R("fix_int", "fix int a esph/integrate"), K("pair", " contact off")],
+     "error:need a contact rule"),
+    ("pc_rigid_mixed_body", [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+                             R("fix_int", "fix int a esph/integrate"),
+                             R("body_b", "set group b i_esph_body 1")],
+     "error:rigid and of deformable", 2),
     ("pc_before_pair_style", [M("coeff", "pair")], "error:Pair_coeff command without a pair style"),
     # ---------------- fix esph/integrate ----------------
     ("fi_unknown_keyword", [K("fix_int", " nve")], "error:Unknown fix esph/integrate keyword"),
