@@ -73,6 +73,7 @@ static constexpr double GAP_EPS = 1.0e-6;
 static constexpr int EXTRA_ASTRESS = 1;
 static constexpr int EXTRA_XSPH = 2;
 static constexpr int EXTRA_FRICTION = 4;
+static constexpr int EXTRA_RIGID = 8;
 // the friction of a pair never exceeds the force that would stop the pair's slip within
 // 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
 static constexpr double STICK_SHARE = 32.0;
@@ -852,8 +853,6 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   const double *rmass = state->rmass;
   const int *body = state->body;
   const int *type = atom->type;
-  int anyrigid = 0;
-  for (int t = 1; t <= atom->ntypes; t++) anyrigid |= rigid[t];
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double cutsq_global = cut_global * cut_global;
@@ -872,6 +871,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   constexpr int AST = EXTRA & EXTRA_ASTRESS;
   constexpr int XSPH = EXTRA & EXTRA_XSPH;
   constexpr int FRIC = BND && (EXTRA & EXTRA_FRICTION);
+  constexpr int RIG = BND && (EXTRA & EXTRA_RIGID);
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -977,7 +977,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       // a rigid particle (pair_coeff ... rigid yes) meets only deformable ones of other
       // bodies, as the mirror image of its partner: stress, sound speed and density of the
       // partner, twice the normal relative velocity (below): the reaction of a rigid wall
-      const int ri = anyrigid && rigid[type[i]], rj = anyrigid && rigid[type[j]];
+      const int ri = RIG && rigid[type[i]], rj = RIG && rigid[type[j]];
       if ((ri || rj) && (!cross || (ri && rj))) continue;
       const double *qa = ri ? qj : qi;
       const double *qb = rj ? qi : qj;
@@ -994,11 +994,12 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
-        vn = (ri || rj ? 2.0 : 1.0) * (vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2]);
+        vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
         // the slip velocity (of i against j) for friction
         if (FRIC)
           for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
+        if (RIG && (ri || rj)) vn *= 2.0;
         // only the normal relative velocity couples across the interface
         vij[0] = vn * nc[0];
         vij[1] = vn * nc[1];
@@ -1199,31 +1200,43 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
 template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
 {
   const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0);
-  // friction acts between bodies only: with boundary particles
+  // friction and rigid bodies act between bodies only: with boundary particles
   if constexpr (BND) {
-    if (friction > 0.0 && contact != CONTACT_OFF) {
-      pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
-      return;
+    int anyrigid = 0;
+    for (int t = 1; t <= atom->ntypes; t++) anyrigid |= rigid[t];
+    const int fric = (friction > 0.0 && contact != CONTACT_OFF);
+    switch ((fric ? EXTRA_FRICTION : 0) | (anyrigid ? EXTRA_RIGID : 0)) {
+      case EXTRA_FRICTION:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
+        return;
+      case EXTRA_RIGID:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_RIGID>(extra);
+        return;
+      case EXTRA_FRICTION | EXTRA_RIGID:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION | EXTRA_RIGID>(extra);
+        return;
+      default:
+        break;
     }
   }
   pair_loop_select<BND, HVAR, HEAT, CORR, 0>(extra);
 }
 
-template <int BND, int HVAR, int HEAT, int CORR, int FRICTION>
+template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA>
 void PairESPHSolid::pair_loop_select(int extra)
 {
   switch (extra) {
     case 0:
-      pair_loop<BND, HVAR, HEAT, CORR, FRICTION>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA>();
       break;
     case EXTRA_ASTRESS:
-      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_ASTRESS>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS>();
       break;
     case EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_XSPH>();
       break;
     default:
-      pair_loop<BND, HVAR, HEAT, CORR, FRICTION | EXTRA_ASTRESS | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>();
       break;
   }
 }

@@ -142,7 +142,7 @@ class PairESPHSolid : public Pair {
   void atom_contact_clear();
   void run_pair_loop(int);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
-  template <int BND, int HVAR, int HEAT, int CORR, int FRICTION> void pair_loop_select(int);
+  template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA> void pair_loop_select(int);
   template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
 };
 

@@ -97,10 +97,13 @@ d = np.loadtxt(os.path.join(a.lastdir, "punch.txt"))
 t, Fp, Fa, pb, E = d[:, 0], d[:, 1], d[:, 2], d[:, 3], d[:, 4] + d[:, 5]
 T2, ZuA = p["round_trip_us"], p["ZuA"]
 for n in range(3):
-    sel = (t > n * T2) & (t < (n + 1) * T2)
-    c.near(f"punch force averaged over round trip {n + 1} [N]", Fp[sel].mean(),
+    # the middle half of each round trip: the force steps at multiples of T2, and the SPH
+    # front, spread over a few spacings, leaks into a whole-trip mean by several percent
+    # depending on how the first layer engages
+    sel = (t > (n + 0.25) * T2) & (t < (n + 0.75) * T2)
+    c.near(f"punch force on the plateau of round trip {n + 1} [N]", Fp[sel].mean(),
            (2 * n + 1) * ZuA, 0.04 * (2 * n + 1) * ZuA,
-           f"1D waves: (2n+1) rho c_L u A; 4 %: measured +2 to +3 %, the SPH lattice sum "
+           f"1D waves: (2n+1) rho c_L u A; 4 %: measured +2.0 to +2.4 %, the SPH lattice sum "
            f"-sum_j V_j x_ij,x dW/dx = 1.020 at h = dx")
 ts = t * 1e-6
 W = np.concatenate([[0.0], np.cumsum(0.5 * u * (Fp[1:] + Fp[:-1]) * np.diff(ts))])
