@@ -158,7 +158,7 @@ void PairESPHSolid::set_defaults()
   contact = CONTACT_SOLID;
   gaptol = 0.05;
   onset = 10;
-  correct_flag = 0;
+  correct_flag = 1;
   astress_flag = 0;
   astress_eps = 0.0;
   astress_n = 4;

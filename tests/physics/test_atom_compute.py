@@ -228,8 +228,11 @@ c.less("sum over each body of the per-particle contact force vs compute esph/con
        rel, 1e-12, "the same pair forces, another summation order")
 c.less("no contact force where compute esph/contact has none",
        max(np.abs(fa[~on]).max(), np.abs(fb[~on]).max()), 1e-300, "no contact, no force")
-c.true("contact flag on both faces in contact",
-       min(np.array(th["c_nA"])[on].min(), np.array(th["c_nB"])[on].min()) >= 16,
+# while the interface is loaded (force above half its peak): as the release wave arrives
+# the force falls on fewer pairs
+loaded = fc >= 0.5 * fc.max()
+c.true("contact flag on both faces while loaded",
+       min(np.array(th["c_nA"])[loaded].min(), np.array(th["c_nB"])[loaded].min()) >= 16,
        "at least the 4x4 face particles of each block")
 one = read_dump(os.path.join(a.lastdir, "dump.two"), 60)
 bnd = one["mass"] == 0.0
