@@ -116,10 +116,14 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
 static constexpr double GAP_KAPPA = 200.0;
 static constexpr int GAP_SLOTS = 4;
 
+// scores further apart than this give weights below 4e-18, under the round-off of the
+// leading weight: the worse side is dropped without evaluating the exponential
+static constexpr double GAP_SCORE_CUT = 40.0 / GAP_KAPPA;
+
 inline void contact_bnd_merge(double *best, const double *other)
 {
-  if (other[1] <= 0.0) return;
-  if (best[1] <= 0.0) {
+  if (other[1] <= 0.0 || other[0] < best[0] - GAP_SCORE_CUT) return;
+  if (best[1] <= 0.0 || best[0] < other[0] - GAP_SCORE_CUT) {
     for (int k = 0; k < GAP_SLOTS; k++) best[k] = other[k];
     return;
   }
