@@ -8,6 +8,8 @@ import shutil
 import subprocess
 import sys
 
+import numpy as np
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 EXAMPLES = os.path.join(ROOT, "examples")
@@ -127,3 +129,23 @@ class Checks:
     def done(self):
         print(f"{self.npass} passed, {self.nfail} failed")
         sys.exit(0 if self.nfail == 0 else 1)
+
+
+def production_thermo(text):
+    """the longest thermo block of a log (the production run, not a closing run 0)"""
+    return max(thermo(text), key=lambda r: len(r["Step"]))
+
+
+def worst_difference(r1, r2):
+    """largest relative difference over the columns of two thermo blocks (each column
+    scaled by its largest magnitude, at least 1e-4): (value, column); inf if the blocks
+    differ in length"""
+    worst, col = 0.0, ""
+    for k, x in r1.items():
+        x, y = np.array(x), np.array(r2.get(k, []))
+        if len(x) != len(y):
+            return np.inf, k + " (length)"
+        d = np.abs(x - y).max() / max(np.abs(x).max(), 1e-4)
+        if d > worst:
+            worst, col = d, k
+    return worst, col

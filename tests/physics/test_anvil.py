@@ -124,17 +124,9 @@ c.near("punch stroke [um]", p["stroke_um"], u * 6.0, 1e-6, "u t")
 # scene inside the block
 for name, infile in (("rod on rigid anvil", "anvil/in.anvil"), ("punch", "anvil/in.punch")):
     tag = infile.split(".")[-1]
-    runs = {np_: max(et.thermo(et.run(a, infile, {}, np=np_, log=f"log.mpi.{tag}.{np_}")),
-                     key=lambda r: len(r["Step"])) for np_ in (1, 2)}
-    worst, col = 0.0, ""
-    for k, x in runs[1].items():
-        x, y = np.array(x), np.array(runs[2].get(k, []))
-        if len(x) != len(y):
-            worst, col = np.inf, k + " (length)"
-            break
-        dd = np.abs(x - y).max() / max(np.abs(x).max(), 1e-4)
-        if dd > worst:
-            worst, col = dd, k
+    runs = {np_: et.production_thermo(et.run(a, infile, {}, np=np_,
+                                             log=f"log.mpi.{tag}.{np_}")) for np_ in (1, 2)}
+    worst, col = et.worst_difference(runs[1], runs[2])
     print(f"INFO {name}, np 1 vs 2: {len(runs[1]['Step'])} thermo rows, worst relative "
           f"difference {worst:.3e} in {col}")
     c.less(f"{name}: np 2 vs np 1, max relative thermo difference", worst, 1e-10,

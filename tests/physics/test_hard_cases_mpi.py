@@ -4,7 +4,6 @@ round-off (short, coarse variants). Tolerance as in test_mpi.py: relative 1e-10 
 thermo column; summation order changes the last bits only, a communication bug shows
 as 1e-3 or more. Columns that are zero up to round-off (lateral momenta, ~1e-18) are
 compared against a floor of 1e-4 in the scale."""
-import numpy as np
 
 import esphtest as et
 
@@ -37,18 +36,9 @@ cases = [
 ]
 for name, infile, var in cases:
     tag = name.replace(" ", "_")
-    # the longest thermo block of each log (the production run, not a closing run 0)
-    runs = {np_: max(et.thermo(et.run(a, infile, var, np=np_, log=f"log.{tag}.{np_}")),
-                     key=lambda r: len(r["Step"])) for np_ in (1, 2)}
-    worst, col = 0.0, ""
-    for k, x in runs[1].items():
-        x, y = np.array(x), np.array(runs[2].get(k, []))
-        if len(x) != len(y):
-            worst, col = np.inf, k + " (length)"
-            break
-        d = np.abs(x - y).max() / max(np.abs(x).max(), 1e-4)
-        if d > worst:
-            worst, col = d, k
+    runs = {np_: et.production_thermo(et.run(a, infile, var, np=np_, log=f"log.{tag}.{np_}"))
+            for np_ in (1, 2)}
+    worst, col = et.worst_difference(runs[1], runs[2])
     print(f"INFO {name}: {len(runs[1]['Step'])} thermo rows, worst relative difference "
           f"{worst:.3e} in {col}")
     c.less(f"{name}: np 2 vs np 1, max relative difference", worst, 1.0e-10,
