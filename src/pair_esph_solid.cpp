@@ -274,13 +274,13 @@ void PairESPHSolid::settings(int narg, char **arg)
       if (eps <= 0.0) error->all(FLERR, iarg + 4, "Pair esph/solid visc epsilon must be > 0");
       iarg += 4;
     } else if (strcmp(arg[iarg], "visc/switch") == 0) {
-      if (iarg + 2 >= narg)
-        utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/switch", error);
-      if (strcmp(arg[iarg + 1], "off") == 0) {
+      if (iarg + 1 < narg && strcmp(arg[iarg + 1], "off") == 0) {
         vswitch_flag = 0;
         iarg += 2;
         continue;
       }
+      if (iarg + 2 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/switch", error);
       vswitch_min = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       vswitch_l = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       if (vswitch_min <= 0.0)
