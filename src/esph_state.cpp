@@ -63,9 +63,18 @@ void ESPHState::ensure_plastic(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::ensure_visc(LAMMPS *lmp)
+{
+  if (internal_fix_exists(lmp, FIX_ID_VISC, "esph_alpha")) return;
+  lmp->modify->add_fix(std::string(FIX_ID_VISC) + " all property/atom d_esph_alpha");
+}
+
+/* ---------------------------------------------------------------------- */
+
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
-    gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), lmp(_lmp), iepsp(-1)
+    gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr), lmp(_lmp), iepsp(-1),
+    ialpha(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -106,4 +115,6 @@ void ESPHState::fetch()
   int flag, cols;
   iepsp = atom->find_custom("esph_epsp", flag, cols);
   epsp = (iepsp >= 0) ? atom->dvector[iepsp] : nullptr;
+  ialpha = atom->find_custom("esph_alpha", flag, cols);
+  alpha = (ialpha >= 0) ? atom->dvector[ialpha] : nullptr;
 }

@@ -27,6 +27,9 @@
 //                  mean over its own body's boundary particles; GAP_NONE = no other body near
 //   d_esph_gapv    its rate of change
 //   d_esph_eng     engagement of a real particle with another body (0..1, see esph_contact.h)
+//   d_esph_epsp    equivalent plastic strain (fix ESPH_PLASTIC, only with plasticity)
+//   d_esph_alpha   coefficient of the switched artificial viscosity (fix ESPH_VISC, only with
+//                  pair_style esph/solid visc/switch; 0 = unset)
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -43,24 +46,29 @@ class ESPHState {
   static constexpr const char *FIX_ID_STRESS = "ESPH_STRESS";
   static constexpr const char *FIX_ID_NORMAL = "ESPH_NORMAL";
   static constexpr const char *FIX_ID_PLASTIC = "ESPH_PLASTIC";
+  static constexpr const char *FIX_ID_VISC = "ESPH_VISC";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
   // create the plastic-strain fix (d_esph_epsp) if it does not exist yet: only scenes
   // with plasticity carry it
   static void ensure_plastic(LAMMPS *lmp);
+  // create the viscosity-switch fix (d_esph_alpha) if it does not exist yet: only scenes
+  // with visc/switch carry it
+  static void ensure_visc(LAMMPS *lmp);
 
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
   void fetch();
 
   double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
-  double *epsp;    // equivalent plastic strain, nullptr without plasticity
+  double *epsp;     // equivalent plastic strain, nullptr without plasticity
+  double *alpha;    // switched viscosity coefficient, nullptr without visc/switch
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha;
 };
 
 }    // namespace LAMMPS_NS

@@ -228,6 +228,10 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
   double *epsp = state->epsp;
   double **xs = pair->xsph_flag ? pair->xsph : nullptr;
+  // switched viscosity coefficient, kept within [alpha_min, alpha]
+  double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
+  const double *dalpha = pair->dalpha;
+  const double amin = pair->vswitch_min, amax = pair->alpha;
 
   for (int i = 0; i < nlocal; i++) {
     double *p = pred[i];
@@ -261,6 +265,10 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         // the prediction does not commit plastic strain
         if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
         p[P_DIVV] = -drho[i] / rho[i];
+        if (alpha) {
+          alpha[i] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
+          p[P_ALPHA] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
+        }
         continue;
       }
       if (move) {
@@ -288,6 +296,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
     p[P_H] = h[i];
     for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k];
     p[P_DIVV] = (rho[i] > 0.0) ? -drho[i] / rho[i] : 0.0;
+    p[P_ALPHA] = alpha ? alpha[i] : 0.0;
   }
   pair->pred_valid = 1;
 }
@@ -311,6 +320,9 @@ void FixESPHIntegrate::final_integrate()
   const int *type = atom->type;
   const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
   double *epsp = state->epsp;
+  double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
+  const double *dalpha = pair->dalpha;
+  const double amin = pair->vswitch_min, amax = pair->alpha;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -328,6 +340,7 @@ void FixESPHIntegrate::final_integrate()
       const int t = type[i];
       if (yield[t] > 0.0)
         epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
+      if (alpha) alpha[i] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
     } else if (move) {
       v[i][0] = bvel[i][0];
       v[i][1] = bvel[i][1];
@@ -521,6 +534,7 @@ double FixESPHIntegrate::fingerprint(int i)
   h = hash_mix(h, state->gapv[i]);
   h = hash_mix(h, state->eng[i]);
   if (state->epsp) h = hash_mix(h, state->epsp[i]);
+  if (state->alpha) h = hash_mix(h, state->alpha[i]);
   h = hash_mix(h, (double) atom->type[i]);
   h = hash_mix(h, (double) state->body[i]);
   h = hash_mix(h, (atom->mask[i] & groupbit) ? 1.0 : 0.0);
@@ -724,8 +738,10 @@ void FixESPHIntegrate::unpack_restart(int nlocal, int nth)
   // skip the values of the fixes before this one
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  // a file written before P_ALPHA existed holds fewer values: the rest start at 0
+  const int nfile = MIN(static_cast<int>(extra[nlocal][m]) - 1, NPRED);
   m++;
-  for (int k = 0; k < NPRED; k++) pred[nlocal][k] = extra[nlocal][m++];
+  for (int k = 0; k < NPRED; k++) pred[nlocal][k] = (k < nfile) ? extra[nlocal][m++] : 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -63,11 +63,11 @@ class FixESPHIntegrate : public Fix {
   // the predicted end-of-step state, made in initial_integrate and read by the pair during
   // the force computation; at the end of a run (and in restart files) the real-particle
   // normal, surface gap, gap rate and engagement that the last force computation used
-  // (P_USED .. P_USED + 5)
-  // and the
-  // fingerprint of the atom's state (P_HASH)
+  // (P_USED .. P_USED + 5), the fingerprint of the atom's state (P_HASH), and the
+  // predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch; last, so that
+  // restart files written before it existed are still read)
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
-                       P_HASH = 19, NPRED = 20;
+                       P_HASH = 19, P_ALPHA = 20, NPRED = 21;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
 

@@ -74,6 +74,7 @@ static constexpr int EXTRA_ASTRESS = 1;
 static constexpr int EXTRA_XSPH = 2;
 static constexpr int EXTRA_FRICTION = 4;
 static constexpr int EXTRA_RIGID = 8;
+static constexpr int EXTRA_VSWITCH = 16;
 // the friction of a pair never exceeds the force that would stop the pair's slip within
 // 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
 static constexpr double STICK_SHARE = 32.0;
@@ -101,6 +102,9 @@ static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng
 // with the artificial stress only (not communicated: computed for ghosts from Q_A)
 static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
 static constexpr int Q_RFLAG = 26;    // 1 if R != 0
+// with the viscosity switch: alpha_i in the last column, Q_ALPHA or Q_ALPHA_AST
+static constexpr int Q_ALPHA = 20;
+static constexpr int Q_ALPHA_AST = 27;
 
 enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT };
 
@@ -111,7 +115,7 @@ static constexpr double BIG_DT = 1.0e300;
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid(nullptr),
     matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr),
-    ds(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0),
+    ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0),
     atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
     fix_int(nullptr)
 {
@@ -151,6 +155,9 @@ void PairESPHSolid::set_defaults()
   dim = domain->dimension;
   alpha = beta = 1.0;
   eps = 0.1;
+  vswitch_flag = 0;
+  vswitch_min = 0.1;
+  vswitch_l = 0.2;
   heat_flag = 0;
   g1 = g2 = 0.0;
   hvar_flag = 0;
@@ -180,6 +187,7 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(de);
   memory->destroy(dh);
   memory->destroy(ds);
+  memory->destroy(dalpha);
   memory->destroy(bvel);
   memory->destroy(bspin);
   memory->destroy(xsph);
@@ -265,6 +273,24 @@ void PairESPHSolid::settings(int narg, char **arg)
         error->all(FLERR, iarg + 2, "Pair esph/solid visc alpha and beta must be >= 0");
       if (eps <= 0.0) error->all(FLERR, iarg + 4, "Pair esph/solid visc epsilon must be > 0");
       iarg += 4;
+    } else if (strcmp(arg[iarg], "visc/switch") == 0) {
+      if (iarg + 1 < narg && strcmp(arg[iarg + 1], "off") == 0) {
+        vswitch_flag = 0;
+        iarg += 2;
+        continue;
+      }
+      if (iarg + 2 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/switch", error);
+      vswitch_min = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      vswitch_l = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (vswitch_min <= 0.0)
+        error->all(FLERR, iarg + 2, "Pair esph/solid visc/switch alpha_min must be > 0, got {}",
+                   arg[iarg + 1]);
+      if (vswitch_l <= 0.0 || vswitch_l > 1.0)
+        error->all(FLERR, iarg + 3, "Pair esph/solid visc/switch l must be in (0, 1], got {}",
+                   arg[iarg + 2]);
+      vswitch_flag = 1;
+      iarg += 3;
     } else if (strcmp(arg[iarg], "heat") == 0) {
       if (iarg + 2 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid heat", error);
       g1 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -366,6 +392,13 @@ void PairESPHSolid::settings(int narg, char **arg)
                "Pair esph/solid artstress spacing dp = {} must be below the kernel support "
                "{} x h = {}",
                astress_dp, KERNEL_SUPPORT, KERNEL_SUPPORT * h0);
+  if (vswitch_flag && vswitch_min > alpha)
+    error->all(FLERR,
+               "Pair esph/solid visc/switch alpha_min {} must not exceed the visc alpha {} (its "
+               "ceiling)",
+               vswitch_min, alpha);
+  // the switched coefficient is per-atom state, like the density
+  if (vswitch_flag) ESPHState::ensure_visc(lmp);
   cut_global = KERNEL_SUPPORT * h0 * hmax;
 }
 
@@ -594,11 +627,24 @@ void PairESPHSolid::setup()
     if (state->rmass[i] == 0.0) nb++;
   MPI_Allreduce(&nb, &nboundary, 1, MPI_LMP_BIGINT, MPI_SUM, world);
 
+  // an unset switched viscosity (0, e.g. a new particle) starts at its ceiling: a shock
+  // present at the start (bodies that touch at t = 0) is damped as without the switch
+  if (vswitch_flag) {
+    if (!state->alpha)
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Pair esph/solid visc/switch: the fix {} of d_esph_alpha is gone (it must not "
+                 "be deleted)",
+                 ESPHState::FIX_ID_VISC);
+    for (int i = 0; i < nlocal; i++)
+      if (state->alpha[i] == 0.0) state->alpha[i] = alpha;
+  }
+
   grow_work();
   // rates start at zero until the first compute
   for (int i = 0; i < nmax; i++) {
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+    if (dalpha) dalpha[i] = 0.0;
   }
 }
 
@@ -607,7 +653,7 @@ void PairESPHSolid::setup()
 void PairESPHSolid::grow_work()
 {
   // the artificial stress keeps R next to the other hoisted quantities (memory locality)
-  const int cols = NHQ + (astress_flag ? NHQ_AST : 0);
+  const int cols = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
     hq_cols = cols;
@@ -615,6 +661,10 @@ void PairESPHSolid::grow_work()
   }
   // set by every force computation before the integrator reads it: no initial values
   if (xsph_flag && !xsph && nmax > 0) memory->create(xsph, nmax, 3, "pair:xsph");
+  if (vswitch_flag && !dalpha && nmax > 0) {
+    memory->create(dalpha, nmax, "pair:dalpha");
+    for (int i = 0; i < nmax; i++) dalpha[i] = 0.0;
+  }
   if (atom->nmax <= nmax) return;
   const int old = nmax;
   nmax = atom->nmax;
@@ -627,7 +677,9 @@ void PairESPHSolid::grow_work()
   memory->grow(bvel, nmax, 3, "pair:bvel");
   memory->grow(bspin, nmax, 3, "pair:bspin");
   if (xsph_flag || xsph) memory->grow(xsph, nmax, 3, "pair:xsph");
+  if (vswitch_flag || dalpha) memory->grow(dalpha, nmax, "pair:dalpha");
   for (int i = old; i < nmax; i++) {
+    if (dalpha) dalpha[i] = 0.0;
     drho[i] = de[i] = dh[i] = 0.0;
     for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
     for (int k = 0; k < 3; k++) bvel[i][k] = bspin[i][k] = 0.0;
@@ -650,6 +702,9 @@ void PairESPHSolid::hoist()
   const double hlimit = cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12);
   // internal units from here on: sigma/rho^2, e and c (esph_units.h)
   const double ein = units.energy_in, pin = units.pressure_in;
+  // the switched viscosity coefficient: its column, and the predicted or current alpha_i
+  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
+  const double *alpha_now = vswitch_flag ? state->alpha : nullptr;
 
   double dtmin = BIG_DT;
   for (int i = 0; i < nlocal; i++) {
@@ -687,6 +742,7 @@ void PairESPHSolid::hoist()
       q[Q_A + 4] = sp[4] * pin * inv;
       q[Q_A + 5] = sp[5] * pin * inv;
       q[Q_E] = e;
+      if (alpha_now) q[qal] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
       // CFL with the longitudinal wave speed
       const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
       const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
@@ -708,6 +764,7 @@ void PairESPHSolid::hoist()
       q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
       q[Q_H] = state->h[i];
       for (int k = 0; k < 6; k++) q[Q_A + k] = 0.0;
+      if (alpha_now) q[qal] = 0.0;
     }
   }
   dt_cfl = dtmin;
@@ -728,7 +785,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // forward communication of what neighbours need, in one message
   comm_bnd = bnd;
-  nforward = 12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0);
+  nforward = 12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;
@@ -872,6 +929,10 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   constexpr int XSPH = EXTRA & EXTRA_XSPH;
   constexpr int FRIC = BND && (EXTRA & EXTRA_FRICTION);
   constexpr int RIG = BND && (EXTRA & EXTRA_RIGID);
+  constexpr int VSW = EXTRA & EXTRA_VSWITCH;
+  constexpr int QAL = AST ? Q_ALPHA_AST : Q_ALPHA;
+  // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
+  const double beta_ratio = (VSW && alpha > 0.0) ? beta / alpha : 0.0;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -1011,7 +1072,13 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       double pi_ij = 0.0;
       if (vr < 0.0) {
         const double mu = hij * vr / (rsq + eps * hij * hij);
-        pi_ij = (-alpha * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + beta * mu * mu) /
+        double al = alpha, be = beta;
+        if (VSW) {
+          // Morris-Monaghan switch: the mean of the two particles' alpha
+          al = 0.5 * (qa[QAL] + qb[QAL]);
+          be = beta_ratio * al;
+        }
+        pi_ij = (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) /
             (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
       }
       // heating by the artificial viscosity and stress, half to each particle
@@ -1199,7 +1266,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
 
 template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
 {
-  const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0);
+  const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0) |
+      (vswitch_flag ? EXTRA_VSWITCH : 0);
   // friction and rigid bodies act between bodies only: with boundary particles
   if constexpr (BND) {
     int anyrigid = 0;
@@ -1235,8 +1303,21 @@ void PairESPHSolid::pair_loop_select(int extra)
     case EXTRA_XSPH:
       pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_XSPH>();
       break;
-    default:
+    case EXTRA_ASTRESS | EXTRA_XSPH:
       pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>();
+      break;
+    case EXTRA_VSWITCH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH>();
+      break;
+    case EXTRA_VSWITCH | EXTRA_ASTRESS:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS>();
+      break;
+    case EXTRA_VSWITCH | EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_XSPH>();
+      break;
+    default:
+      pair_loop<BND, HVAR, HEAT, CORR,
+                CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS | EXTRA_XSPH>();
       break;
   }
 }
@@ -1309,6 +1390,7 @@ void PairESPHSolid::finalize(int eflag)
   double **v = atom->v;
   const int bnd = (nboundary > 0);
   double esum = 0.0;
+  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
 
   for (int i = 0; i < nlocal; i++) {
     const double *a = acc[i];
@@ -1346,6 +1428,13 @@ void PairESPHSolid::finalize(int eflag)
         for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
       dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
+      // viscosity switch (Morris and Monaghan 1997): decay to alpha_min over
+      // tau = h / (l c), rise towards alpha under compression, div v = -drho / rho
+      if (vswitch_flag) {
+        const double al = q[qal];
+        const double compress = MAX(drho[i] / rho, 0.0);
+        dalpha[i] = -(al - vswitch_min) * vswitch_l * q[Q_C] / q[Q_H] + compress * (alpha - al);
+      }
       if (bnd) store_normal(i);
       if (eflag) {
         const double ei = rmass[i] * q[Q_E] * units.energy;
@@ -1357,6 +1446,7 @@ void PairESPHSolid::finalize(int eflag)
       store_bnd_gap(i);
       drho[i] = de[i] = dh[i] = 0.0;
       for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+      if (vswitch_flag) dalpha[i] = 0.0;
       if (a[B_WSUM] > 0.0) {
         // interpolation from the real particles p of the body: with the Shepard means
         // vbar, xi = xbar - x_k, and the corrected velocity gradient
@@ -1626,6 +1716,7 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       buf[m++] = q[Q_E];
       buf[m++] = q[Q_ZETA];
     }
+    if (vswitch_flag) buf[m++] = q[hq_cols - 1];
   }
   return m;
 }
@@ -1664,6 +1755,7 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       q[Q_E] = buf[m++];
       q[Q_ZETA] = buf[m++];
     }
+    if (vswitch_flag) q[hq_cols - 1] = buf[m++];
   }
 }
 
@@ -1742,6 +1834,7 @@ double PairESPHSolid::memory_usage()
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (NACC + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
+  if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   return bytes;
 }

@@ -66,6 +66,9 @@ class PairESPHSolid : public Pair {
   int kernel;                 // ESPH::KernelType
   int dim;                    // kernel dimension (1, 2, 3)
   double alpha, beta, eps;    // Monaghan-Gingold viscosity
+  int vswitch_flag;           // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
+  double vswitch_min;         // its floor alpha_min (the ceiling is alpha)
+  double vswitch_l;           // its decay constant l: tau_i = h_i / (l c_i)
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;         // variable smoothing length (eq. 24)
@@ -98,9 +101,11 @@ class PairESPHSolid : public Pair {
   double **acc;                    // accumulated sums, NACC per atom (reverse communicated)
   double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
   double *drho, *de, *dh, **ds;    // rates for the integrator
+  double *dalpha;                  // rate of d_esph_alpha, only with visc/switch
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
   double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
-  int hq_cols;                     // columns of hq: NHQ, + NHQ_AST with the artificial stress
+  int hq_cols;    // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 1 with the
+                  // viscosity switch (its alpha_i, the last column)
   int comm_stage;
   int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;
