@@ -168,6 +168,12 @@ CASES = [
     ("ps_friction_negative", [K("pair", " friction -0.1")], "error:friction coefficient must be"),
     ("ps_friction_text", [K("pair", " friction rough")], "error:Expected floating point"),
     ("ps_friction_default", [K("pair", " friction 0")], "same"),
+    ("ps_vswitch_missing", [K("pair", " visc/switch 0.1")], "error:missing argument"),
+    ("ps_vswitch_zero", [K("pair", " visc/switch 0 0.2")], "error:alpha_min must be > 0"),
+    ("ps_vswitch_l", [K("pair", " visc/switch 0.1 2")], "error:l must be in (0, 1]"),
+    ("ps_vswitch_text", [K("pair", " visc/switch low 0.2")], "error:Expected floating point"),
+    ("ps_vswitch_above", [K("pair", " visc/switch 2 0.2")], "error:must not exceed the visc alpha"),
+    ("ps_vswitch_off", [K("pair", " visc/switch off")], "same"),
     # ---------------- pair_coeff ----------------
     ("pc_missing", [D("coeff")], "error:coeffs are not set"),
     ("pc_one_type_only", [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 " + MG)],
