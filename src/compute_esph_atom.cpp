@@ -23,6 +23,7 @@
 #include "atom.h"
 #include "error.h"
 #include "esph_state.h"
+#include "esph_strength.h"
 #include "force.h"
 #include "memory.h"
 #include "pair_esph_solid.h"
@@ -144,10 +145,8 @@ void ComputeESPHAtom::compute_peratom()
     // in pressure units, as the stress d2_esph_s
     P *= pair->units.pressure;
     const double *s = state->s[i];
-    const double s2 =
-        s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
     out[PRESSURE] = P;
-    out[VONMISES] = sqrt(1.5 * s2);
+    out[VONMISES] = ESPH::von_mises(s);
     // Cauchy stress sigma = -P I + S, tension positive
     out[SXX] = s[0] - P;
     out[SYY] = s[1] - P;

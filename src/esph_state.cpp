@@ -55,26 +55,31 @@ void ESPHState::ensure(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+// an optional internal fix with one per-atom double d_<name>, created once
+static void ensure_optional(LAMMPS *lmp, const char *id, const char *name)
+{
+  if (internal_fix_exists(lmp, id, name)) return;
+  lmp->modify->add_fix(fmt::format("{} all property/atom d_{}", id, name));
+}
+
 void ESPHState::ensure_plastic(LAMMPS *lmp)
 {
-  if (internal_fix_exists(lmp, FIX_ID_PLASTIC, "esph_epsp")) return;
-  lmp->modify->add_fix(std::string(FIX_ID_PLASTIC) + " all property/atom d_esph_epsp");
+  ensure_optional(lmp, FIX_ID_PLASTIC, "esph_epsp");
 }
 
 /* ---------------------------------------------------------------------- */
 
 void ESPHState::ensure_visc(LAMMPS *lmp)
 {
-  if (internal_fix_exists(lmp, FIX_ID_VISC, "esph_alpha")) return;
-  lmp->modify->add_fix(std::string(FIX_ID_VISC) + " all property/atom d_esph_alpha");
+  ensure_optional(lmp, FIX_ID_VISC, "esph_alpha");
 }
 
 /* ---------------------------------------------------------------------- */
 
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
-    gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr), lmp(_lmp), iepsp(-1),
-    ialpha(-1)
+    gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
+    lmp(_lmp), iepsp(-1), ialpha(-1)
 {
   ensure(lmp);
   int flag, cols;

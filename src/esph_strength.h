@@ -58,6 +58,16 @@ inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, do
   matrix_to_voigt(rate, dsdt);
 }
 
+/* von Mises equivalent stress sqrt(3/2 S:S) of a deviator in Voigt order
+   (xx yy zz xy xz yz) */
+
+inline double von_mises(const double *s)
+{
+  const double s2 =
+      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  return sqrt(1.5 * s2);
+}
+
 /* von Mises plasticity with linear isotropic hardening, radial return: when the trial
    sigma_eq = sqrt(3/2 S:S) exceeds Y = Y0 + H epsp, the plastic strain grows by
    depsp = (sigma_eq - Y) / (3 G + H) and the deviator is scaled back onto the grown
@@ -68,9 +78,7 @@ inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, do
 inline double radial_return(double *s, double Y0, double H = 0.0, double G = 0.0, double epsp = 0.0)
 {
   if (Y0 <= 0.0) return 0.0;
-  const double s2 =
-      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-  const double seq = sqrt(1.5 * s2);
+  const double seq = von_mises(s);
   const double Y = Y0 + H * epsp;
   if (seq <= Y) return 0.0;
   const double depsp = (3.0 * G + H > 0.0) ? (seq - Y) / (3.0 * G + H) : 0.0;

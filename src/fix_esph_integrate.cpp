@@ -44,7 +44,14 @@ using namespace FixConst;
 // number of global values in restart files before the contact records, the first of
 // which tells the layout
 static constexpr int NRESTART = 6;
-static constexpr double RESTART_LAYOUT = 20261202.0;
+
+// the switched viscosity coefficient over a half step, kept within [amin, amax]
+static inline double advance_alpha(double a, double rate, double dt, double amin, double amax)
+{
+  return MIN(MAX(a + dt * rate, amin), amax);
+}
+// (changed with the per-atom prediction's layout: P_ALPHA added)
+static constexpr double RESTART_LAYOUT = 2026120202.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -266,8 +273,8 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
         p[P_DIVV] = -drho[i] / rho[i];
         if (alpha) {
-          alpha[i] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
-          p[P_ALPHA] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
+          alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+          p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
         }
         continue;
       }
@@ -340,7 +347,7 @@ void FixESPHIntegrate::final_integrate()
       const int t = type[i];
       if (yield[t] > 0.0)
         epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
-      if (alpha) alpha[i] = MIN(MAX(alpha[i] + dth * dalpha[i], amin), amax);
+      if (alpha) alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
     } else if (move) {
       v[i][0] = bvel[i][0];
       v[i][1] = bvel[i][1];
@@ -738,10 +745,9 @@ void FixESPHIntegrate::unpack_restart(int nlocal, int nth)
   // skip the values of the fixes before this one
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  // a file written before P_ALPHA existed holds fewer values: the rest start at 0
-  const int nfile = MIN(static_cast<int>(extra[nlocal][m]) - 1, NPRED);
+  // (a file of another layout is refused by restart(), which LAMMPS calls first)
   m++;
-  for (int k = 0; k < NPRED; k++) pred[nlocal][k] = (k < nfile) ? extra[nlocal][m++] : 0.0;
+  for (int k = 0; k < NPRED; k++) pred[nlocal][k] = extra[nlocal][m++];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -113,11 +113,11 @@ static constexpr double BIG_DT = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
-    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid(nullptr),
-    matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr), dh(nullptr),
-    ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr), hq_cols(NHQ), nboundary(0),
-    atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
-    fix_int(nullptr)
+    Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
+    rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
+    dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
+    hq_cols(NHQ), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr),
+    state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -503,9 +503,9 @@ void PairESPHSolid::coeff(int narg, char **arg)
   if (H > 0.0 && Y <= 0.0)
     error->all(FLERR, "Pair esph/solid hardening {} needs a yield stress > 0 (keyword yield)", H);
   eq.rho0 = rho0;
-  // the EOS works in internal units; G, yield and hardening stay in pressure units, like
+  // the EOS works in internal units (factors set by the constructor: the unit style
+  // cannot change once a box exists); G, yield and hardening stay in pressure units, like
   // the stress they act on (d2_esph_s)
-  units.set(force->ftm2v, force->mvv2e, force->nktv2p);
   if (eq.type == EOS_LINEAR) eq.K *= units.pressure_in;
   // plasticity carries the equivalent plastic strain per atom
   if (Y > 0.0) ESPHState::ensure_plastic(lmp);
@@ -541,7 +541,6 @@ void PairESPHSolid::init_style()
                "Pair esph/solid does not support units {}: expected units si, metal, real, cgs, "
                "micro, nano or lj",
                ustyle);
-  units.set(force->ftm2v, force->mvv2e, force->nktv2p);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
   auto fixes = modify->get_fix_by_style("^esph/integrate$");
@@ -551,13 +550,13 @@ void PairESPHSolid::init_style()
   fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);
   // with move no another fix moves the particles; otherwise no other fix may
   ESPHCheck::integrators(lmp, fix_int, fix_int->move);
-  int nrigid = 0;
-  for (int t = 1; t <= atom->ntypes; t++) nrigid += rigid[t];
-  if (nrigid && contact == CONTACT_OFF)
+  rigid_flag = 0;
+  for (int t = 1; t <= atom->ntypes; t++) rigid_flag |= rigid[t];
+  if (rigid_flag && contact == CONTACT_OFF)
     error->all(FLERR, Error::NOLASTLINE,
                "Pair esph/solid rigid types (pair_coeff ... rigid yes) need a contact rule "
                "(contact solid or paper), not contact off");
-  if (nrigid) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
+  if (rigid_flag) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
   if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
     // contact needs boundary particles only when there is more than one body
     int lmin = 1 << 30, lmax = -(1 << 30);
@@ -1078,8 +1077,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           al = 0.5 * (qa[QAL] + qb[QAL]);
           be = beta_ratio * al;
         }
-        pi_ij = (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) /
-            (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
+        pi_ij =
+            (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) / (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
       }
       // heating by the artificial viscosity and stress, half to each particle
       double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
@@ -1114,28 +1113,28 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         // with newton off a pair with a ghost partner is on two ranks: count it once
         const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
         double phi = 1.0;
+        int touching;
         if (solid) {
           // the gaps of both particles, brought to the present with their rates
           const double gap =
               contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
           // touching: closed, or open by no more than round-off (faces that coincide in exact
-          // arithmetic are a round-off distance apart in a rotated scene)
-          if (gap <= gap_eps && count_pair) {
-            ntouch_pairs++;
-            tally_bodies(bi, body[j])[0] += 1.0;
-          }
+          // arithmetic are a round-off distance apart in a rotated scene); counted before
+          // the gate
+          touching = (gap <= gap_eps);
           phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
-          // no tension across contact: a pair that would pull (or not push) does not
-          // interact at all (also not in the strain rate and energy, which would otherwise
-          // see work that no force does)
-          if (phi == 0.0 || fn >= 0.0) continue;
-        } else if (!contact_approach(vn, xn)) {
-          continue;
-        } else if (count_pair) {
+        } else {
           // the paper's rule measures no gap: an interacting pair is a touching one
+          touching = contact_approach(vn, xn);
+        }
+        if (touching && count_pair) {
           ntouch_pairs++;
           tally_bodies(bi, body[j])[0] += 1.0;
         }
+        // solid: no tension across contact, a pair that would pull (or not push) does not
+        // interact at all (also not in the strain rate and energy, which would otherwise see
+        // work that no force does); paper: only approaching pairs interact
+        if (solid ? (phi == 0.0 || fn >= 0.0) : !touching) continue;
         // the coupling weight scales force, strain rate and heating alike, so that the
         // work of the force is what the internal energy receives
         fn *= phi;
@@ -1270,10 +1269,8 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_e
       (vswitch_flag ? EXTRA_VSWITCH : 0);
   // friction and rigid bodies act between bodies only: with boundary particles
   if constexpr (BND) {
-    int anyrigid = 0;
-    for (int t = 1; t <= atom->ntypes; t++) anyrigid |= rigid[t];
     const int fric = (friction > 0.0 && contact != CONTACT_OFF);
-    switch ((fric ? EXTRA_FRICTION : 0) | (anyrigid ? EXTRA_RIGID : 0)) {
+    switch ((fric ? EXTRA_FRICTION : 0) | (rigid_flag ? EXTRA_RIGID : 0)) {
       case EXTRA_FRICTION:
         pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
         return;

@@ -90,6 +90,7 @@ class PairESPHSolid : public Pair {
   double *shear;
   double *yield;        // von Mises yield stress, 0 = elastic (no plasticity)
   double *hardening;    // linear isotropic hardening modulus (d yield / d plastic strain)
+  int rigid_flag;       // some type is rigid (init_style)
   int *rigid;           // 1: rigid type, the mirror image of its contact partner (pair_coeff rigid)
   int *matset;
   // LAMMPS's force, energy and pressure units <-> the internal mechanical units; the EOS

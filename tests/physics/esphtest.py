@@ -149,3 +149,20 @@ def worst_difference(r1, r2):
         if d > worst:
             worst, col = d, k
     return worst, col
+
+
+def example_scene(name, runline, extra=""):
+    """the example input up to its run command (thermo printed with 17 digits), and what
+    read_restart does not restore: styles, fixes, computes, output (variables survive
+    clear)"""
+    text = open(os.path.join(EXAMPLES, name, "in." + name)).read()
+    head = text[:text.index(runline)].replace("format float %.15g", "format float %.17g")
+    head = head.replace("\nthermo_style", "\n" + extra + "thermo_style", 1) if extra else head
+    keep = []
+    for line in head.splitlines():
+        w = line.split()
+        if w and (w[0] in ("pair_style", "pair_coeff", "neighbor", "neigh_modify", "compute",
+                           "thermo_style", "thermo_modify", "thermo")
+                  or line.startswith("fix             int") or "esph/boundary" in line):
+            keep.append(line)
+    return head, "\n".join(keep) + "\n"

@@ -93,28 +93,11 @@ scenes["plastic"] = block_scene(
     "compute epa all property/atom d_esph_epsp\ncompute ep all reduce max c_epa", "c_ep") + ({},)
 
 
-def example_scene(name, runline, extra=""):
-    """the example input up to its run command (thermo printed with 17 digits), and what
-    read_restart does not restore: styles, fixes, computes, output (variables survive
-    clear)"""
-    text = open(os.path.join(et.EXAMPLES, name, "in." + name)).read()
-    head = text[:text.index(runline)].replace("format float %.15g", "format float %.17g")
-    head = head.replace("\nthermo_style", "\n" + extra + "thermo_style", 1) if extra else head
-    keep = []
-    for line in head.splitlines():
-        w = line.split()
-        if w and (w[0] in ("pair_style", "pair_coeff", "neighbor", "neigh_modify", "compute",
-                           "thermo_style", "thermo_modify", "thermo")
-                  or line.startswith("fix             int") or "esph/boundary" in line):
-            keep.append(line)
-    return head, "\n".join(keep) + "\n"
-
-
-scenes["rod"] = example_scene("rod_impact", "run             ${nsteps}") + (
+scenes["rod"] = et.example_scene("rod_impact", "run             ${nsteps}") + (
     {"dx": 0.25, "Limp": 10.0, "Ltgt": 10.0, "tend": 2.0, "out": 0, "thermo_every": 5},)
 # periodic in x: at the split step 136 atoms have left the box since the last neighbour
 # list build, and the setup wraps them back (the fingerprint sees the wrapped position)
-scenes["slabs"] = example_scene(
+scenes["slabs"] = et.example_scene(
     "oblique_slabs", "run             $(ceil",
     "variable ob atom (x>=xhi)||(x<xlo)\ncompute ob all reduce sum v_ob\n") + (
     {"thermo_every": 5},)

@@ -78,17 +78,7 @@ c.less("free bar: kinetic energy kept (negated)", -fb["ke_fraction"], -0.85,
 c.less("free bar: |energy drift| [%]", abs(fb["energy_drift_pct"]), 0.1, "measured 0.021 %")
 
 # --- 4. continuation ---
-text = open(os.path.join(et.EXAMPLES, "rod_impact", "in.rod_impact")).read()
-runline = "run             ${nsteps}"
-head = text[:text.index(runline)].replace("format float %.15g", "format float %.17g")
-keep = []
-for line in head.splitlines():
-    w = line.split()
-    if w and (w[0] in ("pair_style", "pair_coeff", "neighbor", "neigh_modify", "compute",
-                       "thermo_style", "thermo_modify", "thermo")
-              or line.startswith("fix             int") or "esph/boundary" in line):
-        keep.append(line)
-styles = "\n".join(keep) + "\n"
+head, styles = et.example_scene("rod_impact", "run             ${nsteps}")
 DUMP = ("write_dump all custom final.dump id x y z vx vy vz d_esph_alpha modify sort id "
         "format float %.17g\n")
 VAR = {"dim": 1, "dx": 0.2, "tend": 4.0, "out": 0, "thermo_every": 5, "pair_extra": SW}
