@@ -36,6 +36,8 @@
 #include "memory.h"
 #include "modify.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -60,6 +62,16 @@ static constexpr double NEAR_SHELL = 1.5;
 // half of it the detection kernel sees no neighbours)
 static constexpr double SPACING_WARN = 1.1;
 static constexpr double SPACING_ERROR = 1.5;
+// the surface fit of the normals (keyword fit): off by default (see the doc); boundary
+// particles whose first normals differ by 45 degrees or more (an edge, a corner) do not
+// enter each other's fit
+static constexpr double FIT_DEFAULT = 0.0;
+static constexpr double FIT_COS = 0.70710678118654752;    // cos 45 degrees
+// a neighbourhood whose spread across is below FIT_LINE_LO of its spread along (a line:
+// the boundary particles of an edge) keeps its first normal, one above FIT_LINE_HI is a
+// face and takes the fitted one; in between they are blended
+static constexpr double FIT_LINE_LO = 0.1;
+static constexpr double FIT_LINE_HI = 0.3;
 
 /* ---------------------------------------------------------------------- */
 
@@ -72,6 +84,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
 
   spacing = 0.0;
   smooth = 1.0;
+  fit = FIT_DEFAULT;
   btype = 0;
   mode = GENERATE;
   ncreated = 0;
@@ -96,6 +109,14 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
       smooth = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (smooth < 1.0 || smooth > 3.0)
         error->all(FLERR, iarg + 1, "Fix esph/boundary smooth must be in [1,3] spacings, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "fit") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary fit", error);
+      fit = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (fit != 0.0 && (fit < 2.0 || fit > 16.0))
+        error->all(FLERR, iarg + 1,
+                   "Fix esph/boundary fit must be 0 (off) or in [2,16] spacings, got {}",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "given") == 0) {
@@ -343,44 +364,19 @@ void FixESPHBoundary::generate()
     error->all(FLERR, "Fix esph/boundary group {} has no real particles", group->names[igroup]);
 
   // halo: every rank receives the points within the search reach of its own particles
-  const int nprocs = comm->nprocs;
-  if (nprocs > 1) {
-    std::vector<double> box(6 * nprocs);
-    double mine[6] = {blo[0] - reach_len, blo[1] - reach_len, blo[2] - reach_len,
-                      bhi[0] + reach_len, bhi[1] + reach_len, bhi[2] + reach_len};
-    MPI_Allgather(mine, 6, MPI_DOUBLE, box.data(), 6, MPI_DOUBLE, world);
-    std::vector<std::vector<double>> out(nprocs);
+  {
+    std::vector<double> mine;
+    mine.reserve(5 * pts.size());
     for (const auto &q : pts)
-      for (int p = 0; p < nprocs; p++) {
-        if (p == comm->me) continue;
-        const double *b = &box[6 * p];
-        if (q.x[0] < b[0] || q.x[0] > b[3] || q.x[1] < b[1] || q.x[1] > b[4] || q.x[2] < b[2] ||
-            q.x[2] > b[5])
-          continue;
-        out[p].insert(out[p].end(), {q.x[0], q.x[1], q.x[2], (double) q.tag, (double) q.body});
-      }
-    std::vector<int> scount(nprocs), rcount(nprocs), sdispl(nprocs), rdispl(nprocs);
-    for (int p = 0; p < nprocs; p++) scount[p] = out[p].size();
-    MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, world);
-    int stot = 0, rtot = 0;
-    for (int p = 0; p < nprocs; p++) {
-      sdispl[p] = stot;
-      rdispl[p] = rtot;
-      stot += scount[p];
-      rtot += rcount[p];
-    }
-    std::vector<double> sbuf(stot), rbuf(rtot);
-    for (int p = 0; p < nprocs; p++)
-      std::copy(out[p].begin(), out[p].end(), sbuf.data() + sdispl[p]);
-    MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
-                  rdispl.data(), MPI_DOUBLE, world);
-    for (int k = 0; k < rtot; k += 5) {
+      mine.insert(mine.end(), {q.x[0], q.x[1], q.x[2], (double) q.tag, (double) q.body});
+    const auto got = halo_exchange(mine, 5, blo, bhi, reach_len);
+    for (size_t k = 0; k < got.size(); k += 5) {
       Pt q;
-      q.x[0] = rbuf[k];
-      q.x[1] = rbuf[k + 1];
-      q.x[2] = rbuf[k + 2];
-      q.tag = (tagint) rbuf[k + 3];
-      q.body = (int) rbuf[k + 4];
+      q.x[0] = got[k];
+      q.x[1] = got[k + 1];
+      q.x[2] = got[k + 2];
+      q.tag = (tagint) got[k + 3];
+      q.body = (int) got[k + 4];
       pts.push_back(q);
     }
   }
@@ -483,6 +479,8 @@ void FixESPHBoundary::generate()
     src.push_back(i);
   }
 
+  if (fit > 0.0) fit_normals(newx, newn, src);
+
   // create the boundary particles; they migrate to their owners at the next setup
   const int nprev = atom->nlocal;
   const int nnew = src.size();
@@ -531,4 +529,199 @@ void FixESPHBoundary::generate()
   MPI_Allreduce(&nn, &ncreated, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0)
     utils::logmesg(lmp, "Fix esph/boundary: created {} boundary particles\n", ncreated);
+}
+
+/* ----------------------------------------------------------------------
+   records of stride values each (the first three a position) of all ranks:
+   returns those of the other ranks within reach of the bounding box
+   [blo, bhi] of this rank's own ones (an empty box receives nothing)
+------------------------------------------------------------------------- */
+
+std::vector<double> FixESPHBoundary::halo_exchange(const std::vector<double> &mine, int stride,
+                                                   const double *blo, const double *bhi,
+                                                   double reach)
+{
+  const int nprocs = comm->nprocs;
+  std::vector<double> rbuf;
+  if (nprocs == 1) return rbuf;
+  std::vector<double> box(6 * nprocs);
+  const double me[6] = {blo[0] - reach, blo[1] - reach, blo[2] - reach,
+                        bhi[0] + reach, bhi[1] + reach, bhi[2] + reach};
+  MPI_Allgather(me, 6, MPI_DOUBLE, box.data(), 6, MPI_DOUBLE, world);
+  std::vector<std::vector<double>> out(nprocs);
+  for (size_t k = 0; k < mine.size(); k += stride) {
+    const double *x = &mine[k];
+    for (int p = 0; p < nprocs; p++) {
+      if (p == comm->me) continue;
+      const double *b = &box[6 * p];
+      if (x[0] < b[0] || x[0] > b[3] || x[1] < b[1] || x[1] > b[4] || x[2] < b[2] || x[2] > b[5])
+        continue;
+      out[p].insert(out[p].end(), x, x + stride);
+    }
+  }
+  std::vector<int> scount(nprocs), rcount(nprocs), sdispl(nprocs), rdispl(nprocs);
+  for (int p = 0; p < nprocs; p++) scount[p] = out[p].size();
+  MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, world);
+  int stot = 0, rtot = 0;
+  for (int p = 0; p < nprocs; p++) {
+    sdispl[p] = stot;
+    rdispl[p] = rtot;
+    stot += scount[p];
+    rtot += rcount[p];
+  }
+  std::vector<double> sbuf(stot);
+  rbuf.resize(rtot);
+  for (int p = 0; p < nprocs; p++) std::copy(out[p].begin(), out[p].end(), sbuf.data() + sdispl[p]);
+  MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
+                rdispl.data(), MPI_DOUBLE, world);
+  return rbuf;
+}
+
+/* ----------------------------------------------------------------------
+   the normals of the new boundary particles (positions bx, first normals bn,
+   own ones of this rank) refined by the weighted least-squares sphere or
+   plane through the boundary particles of the same body within fit spacings
+   that passes through the particle: on a staircase (a lattice cut at an angle
+   or to a curved shape) the first normals follow the steps, the fitted
+   surface follows the face, the sphere, the cylinder. The weight of particle m in the fit of
+   particle k is W(|x_m - x_k|) ((n_k.n_m - cos 45) / (1 - cos 45))^2 for
+   n_k.n_m > cos 45 (first normals; cubic spline of support fit spacings), so
+   that the faces meeting at an edge or corner are fitted apart. The plane's
+   normal is found by inverse iteration from the first normal, continuous in
+   the particles also where the spread across is nearly isotropic; a
+   neighbourhood that is a line rather than a patch (the boundary particles
+   along an edge) keeps its first normal. Sums in the fixed order of the
+   integer cell grid and of atom IDs: the same on any number of ranks.
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<double> &bn,
+                                  const std::vector<int> &src)
+{
+  const int dim = domain->dimension;
+  const double rfit = fit * spacing;
+  const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
+  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  const int nown = src.size();
+
+  // records x (3), first normal (3), atom ID of the source particle, body; periodic
+  // images of the own ones near the box faces
+  constexpr int S = 8;
+  std::vector<double> rec;
+  double blo[3] = {1.0e300, 1.0e300, 1.0e300}, bhi[3] = {-1.0e300, -1.0e300, -1.0e300};
+  for (int k = 0; k < nown; k++) {
+    const double *p = &bx[3 * k];
+    const double *n = &bn[3 * k];
+    int sh[3][3], ns[3];
+    for (int d = 0; d < 3; d++) {
+      ns[d] = 0;
+      sh[d][ns[d]++] = 0;
+      if (per[d] && p[d] < lo[d] + rfit) sh[d][ns[d]++] = 1;
+      if (per[d] && p[d] > hi[d] - rfit) sh[d][ns[d]++] = -1;
+      blo[d] = MIN(blo[d], p[d]);
+      bhi[d] = MAX(bhi[d], p[d]);
+    }
+    for (int a = 0; a < ns[0]; a++)
+      for (int b = 0; b < ns[1]; b++)
+        for (int c = 0; c < ns[2]; c++)
+          rec.insert(rec.end(),
+                     {p[0] + sh[0][a] * prd[0], p[1] + sh[1][b] * prd[1], p[2] + sh[2][c] * prd[2],
+                      n[0], n[1], n[2], (double) atom->tag[src[k]], (double) state->body[src[k]]});
+  }
+  const auto got = halo_exchange(rec, S, blo, bhi, rfit);
+  rec.insert(rec.end(), got.begin(), got.end());
+  const int nrec = rec.size() / S;
+
+  // integer cell grid of cell size rfit; in each cell the records in the order of atom IDs
+  auto cell_of = [&](const double *x, long long *c) {
+    for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / rfit) + (1 << 20);
+  };
+  auto key_of = [](const long long *c) {
+    return (c[0] << 42) | (c[1] << 21) | c[2];
+  };
+  std::vector<int> order(nrec);
+  for (int k = 0; k < nrec; k++) order[k] = k;
+  std::sort(order.begin(), order.end(), [&rec](int a, int b) {
+    const double *p = &rec[S * a], *q = &rec[S * b];
+    if (p[6] != q[6]) return p[6] < q[6];
+    for (int d = 0; d < 3; d++)
+      if (p[d] != q[d]) return p[d] < q[d];
+    return false;
+  });
+  std::unordered_map<long long, std::vector<int>> grid;
+  for (int k : order) {
+    long long c[3];
+    cell_of(&rec[S * k], c);
+    grid[key_of(c)].push_back(k);
+  }
+
+  const double norm = ESPH::kernel_norm(ESPH::CUBIC, 3, 0.5 * rfit);
+  const double hinv = 2.0 / rfit;
+  for (int k = 0; k < nown; k++) {
+    const double *xk = &bx[3 * k];
+    const Eigen::Vector3d n0(bn[3 * k], bn[3 * k + 1], bn[3 * k + 2]);
+    const int body = state->body[src[k]];
+    long long ck[3];
+    cell_of(xk, ck);
+    // weighted moments of the offsets d and of q = |d|^2
+    double s0 = 0.0, sq = 0.0, sqq = 0.0;
+    Eigen::Vector3d s1 = Eigen::Vector3d::Zero(), spq = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d s2 = Eigen::Matrix3d::Zero();
+    for (int a = -1; a <= 1; a++)
+      for (int b = -1; b <= 1; b++)
+        for (int c = -1; c <= 1; c++) {
+          const long long cm[3] = {ck[0] + a, ck[1] + b, ck[2] + c};
+          auto it = grid.find(key_of(cm));
+          if (it == grid.end()) continue;
+          for (int m : it->second) {
+            const double *q = &rec[S * m];
+            if ((int) q[7] != body) continue;
+            const double agree = n0(0) * q[3] + n0(1) * q[4] + n0(2) * q[5];
+            if (agree <= FIT_COS) continue;
+            Eigen::Vector3d d(q[0] - xk[0], q[1] - xk[1], q[2] - xk[2]);
+            if (dim == 2) d(2) = 0.0;
+            const double r2 = d.squaredNorm();
+            double w, dw;
+            if (!ESPH::kernel_eval(ESPH::CUBIC, 3, norm, hinv, sqrt(r2), w, dw)) continue;
+            const double t = (agree - FIT_COS) / (1.0 - FIT_COS);
+            w *= t * t;
+            s0 += w;
+            s1 += w * d;
+            s2 += w * d * d.transpose();
+            sq += w * r2;
+            spq += w * r2 * d;
+            sqq += w * r2 * r2;
+          }
+        }
+    if (s0 <= 0.0) continue;
+    const Eigen::Vector3d mean = s1 / s0;
+    const Eigen::Matrix3d C = s2 / s0 - mean * mean.transpose();
+    // the sphere (or plane) u4 |d|^2 + u.d + u0 = 0 through the own boundary particle
+    // (d = 0) with unit normal u there that fits best: with u0 and u4 eliminated the
+    // residual is u^T (C - c c^T / v) u, c = cov(d, |d|^2), v = var(|d|^2); exact for
+    // any plane and any sphere
+    const Eigen::Vector3d cpq = spq / s0 - mean * (sq / s0);
+    const double vqq = sqq / s0 - (sq / s0) * (sq / s0);
+    Eigen::Matrix3d F = C;
+    if (vqq > 1.0e-12 * C.trace() * C.trace()) F -= cpq * cpq.transpose() / vqq;
+    double blend = 1.0;
+    if (dim == 2) {
+      // the surface is a line in the xy plane: the normal stays in it
+      F(0, 2) = F(1, 2) = F(2, 0) = F(2, 1) = 0.0;
+      F(2, 2) = C.trace();
+    } else {
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+      es.computeDirect(C, Eigen::EigenvaluesOnly);
+      const Eigen::Vector3d lam = es.eigenvalues();
+      const double q = lam(2) > 0.0 ? lam(1) / lam(2) : 0.0;
+      const double t = MAX(0.0, MIN(1.0, (q - FIT_LINE_LO) / (FIT_LINE_HI - FIT_LINE_LO)));
+      blend = t * t * (3.0 - 2.0 * t);
+    }
+    if (blend <= 0.0) continue;
+    const double eps = 1.0e-6 * C.trace() + 1.0e-30 * spacing * spacing;
+    const Eigen::LDLT<Eigen::Matrix3d> solver(F + eps * Eigen::Matrix3d::Identity());
+    Eigen::Vector3d v = n0;
+    for (int iter = 0; iter < 3; iter++) v = solver.solve(v).normalized();
+    const Eigen::Vector3d nn = (blend * v + (1.0 - blend) * n0).normalized();
+    for (int d = 0; d < 3; d++) bn[3 * k + d] = nn(d);
+  }
 }

@@ -23,6 +23,7 @@ FixStyle(esph/boundary,FixESPHBoundary);
 #include "fix.h"
 
 #include <map>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -38,6 +39,7 @@ class FixESPHBoundary : public Fix {
  protected:
   double spacing;    // particle spacing of the bodies
   double smooth;     // smoothing length of the normal kernel, in spacings
+  double fit;        // radius of the plane fit of the normals, in spacings (0: off)
   int btype;         // type of generated boundary particles (0: type of the source particle)
   int mode;          // GENERATE or GIVEN
   bigint ncreated;
@@ -46,6 +48,9 @@ class FixESPHBoundary : public Fix {
   std::map<int, bigint> made_for;
 
   void generate();
+  void fit_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
+  std::vector<double> halo_exchange(const std::vector<double> &, int, const double *,
+                                    const double *, double);
 };
 
 }    // namespace LAMMPS_NS
