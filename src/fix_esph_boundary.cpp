@@ -294,6 +294,33 @@ struct Pt {
 };
 }    // namespace
 
+/* ----------------------------------------------------------------------
+   the position p and its periodic images within reach of a periodic box face
+   (up to 27): returns their number, the positions in img
+------------------------------------------------------------------------- */
+
+static int periodic_images(const Domain *domain, const double *p, double reach, double img[][3])
+{
+  const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
+  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  int sh[3][3], ns[3];
+  for (int d = 0; d < 3; d++) {
+    ns[d] = 0;
+    sh[d][ns[d]++] = 0;
+    if (per[d] && p[d] < lo[d] + reach) sh[d][ns[d]++] = 1;
+    if (per[d] && p[d] > hi[d] - reach) sh[d][ns[d]++] = -1;
+  }
+  int n = 0;
+  for (int a = 0; a < ns[0]; a++)
+    for (int b = 0; b < ns[1]; b++)
+      for (int c = 0; c < ns[2]; c++, n++) {
+        img[n][0] = p[0] + sh[0][a] * prd[0];
+        img[n][1] = p[1] + sh[1][b] * prd[1];
+        img[n][2] = p[2] + sh[2][c] * prd[2];
+      }
+  return n;
+}
+
 void FixESPHBoundary::generate()
 {
   state->fetch();
@@ -335,24 +362,15 @@ void FixESPHBoundary::generate()
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     nreal++;
     const double *p = atom->x[i];
-    int sh[3][3], ns[3];
-    for (int d = 0; d < 3; d++) {
-      ns[d] = 0;
-      sh[d][ns[d]++] = 0;
-      if (per[d] && p[d] < lo[d] + reach_len) sh[d][ns[d]++] = 1;
-      if (per[d] && p[d] > hi[d] - reach_len) sh[d][ns[d]++] = -1;
+    double img[27][3];
+    const int nimg = periodic_images(domain, p, reach_len, img);
+    for (int m = 0; m < nimg; m++) {
+      Pt q;
+      for (int d = 0; d < 3; d++) q.x[d] = img[m][d];
+      q.tag = atom->tag[i];
+      q.body = state->body[i];
+      pts.push_back(q);
     }
-    for (int a = 0; a < ns[0]; a++)
-      for (int b = 0; b < ns[1]; b++)
-        for (int c = 0; c < ns[2]; c++) {
-          Pt q;
-          q.x[0] = p[0] + sh[0][a] * prd[0];
-          q.x[1] = p[1] + sh[1][b] * prd[1];
-          q.x[2] = p[2] + sh[2][c] * prd[2];
-          q.tag = atom->tag[i];
-          q.body = state->body[i];
-          pts.push_back(q);
-        }
     for (int d = 0; d < 3; d++) {
       blo[d] = MIN(blo[d], p[d]);
       bhi[d] = MAX(bhi[d], p[d]);
@@ -586,7 +604,7 @@ std::vector<double> FixESPHBoundary::halo_exchange(const std::vector<double> &mi
    surface follows the face, the sphere, the cylinder. The weight of particle m in the fit of
    particle k is W(|x_m - x_k|) ((n_k.n_m - cos 45) / (1 - cos 45))^2 for
    n_k.n_m > cos 45 (first normals; cubic spline of support fit spacings), so
-   that the faces meeting at an edge or corner are fitted apart. The plane's
+   that the faces meeting at an edge or corner are fitted apart. The fitted
    normal is found by inverse iteration from the first normal, continuous in
    the particles also where the spread across is nearly isotropic; a
    neighbourhood that is a line rather than a patch (the boundary particles
@@ -599,8 +617,7 @@ void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<dou
 {
   const int dim = domain->dimension;
   const double rfit = fit * spacing;
-  const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
-  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  const double *lo = domain->boxlo;
   const int nown = src.size();
 
   // records x (3), first normal (3), atom ID of the source particle, body; periodic
@@ -611,21 +628,16 @@ void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<dou
   for (int k = 0; k < nown; k++) {
     const double *p = &bx[3 * k];
     const double *n = &bn[3 * k];
-    int sh[3][3], ns[3];
     for (int d = 0; d < 3; d++) {
-      ns[d] = 0;
-      sh[d][ns[d]++] = 0;
-      if (per[d] && p[d] < lo[d] + rfit) sh[d][ns[d]++] = 1;
-      if (per[d] && p[d] > hi[d] - rfit) sh[d][ns[d]++] = -1;
       blo[d] = MIN(blo[d], p[d]);
       bhi[d] = MAX(bhi[d], p[d]);
     }
-    for (int a = 0; a < ns[0]; a++)
-      for (int b = 0; b < ns[1]; b++)
-        for (int c = 0; c < ns[2]; c++)
-          rec.insert(rec.end(),
-                     {p[0] + sh[0][a] * prd[0], p[1] + sh[1][b] * prd[1], p[2] + sh[2][c] * prd[2],
-                      n[0], n[1], n[2], (double) atom->tag[src[k]], (double) state->body[src[k]]});
+    double img[27][3];
+    const int nimg = periodic_images(domain, p, rfit, img);
+    for (int m = 0; m < nimg; m++)
+      rec.insert(rec.end(),
+                 {img[m][0], img[m][1], img[m][2], n[0], n[1], n[2], (double) atom->tag[src[k]],
+                  (double) state->body[src[k]]});
   }
   const auto got = halo_exchange(rec, S, blo, bhi, rfit);
   rec.insert(rec.end(), got.begin(), got.end());

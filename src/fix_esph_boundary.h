@@ -39,7 +39,7 @@ class FixESPHBoundary : public Fix {
  protected:
   double spacing;    // particle spacing of the bodies
   double smooth;     // smoothing length of the normal kernel, in spacings
-  double fit;        // radius of the plane fit of the normals, in spacings (0: off)
+  double fit;        // radius of the surface fit of the normals, in spacings (0: off)
   int btype;         // type of generated boundary particles (0: type of the source particle)
   int mode;          // GENERATE or GIVEN
   bigint ncreated;
