@@ -56,8 +56,9 @@ static constexpr int A_HEAT = 10;     // artificial heat transfer
 static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
 static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
 static constexpr int A_WSUM = 15;     // sum_k W_ik
-static constexpr int A_M =
-    16;    // 16..24: sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected)
+// 16..24: M_i = sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected), summed by the
+// correction pass before the pair loop
+static constexpr int A_M = 16;
 static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i) W_ij (xsph)
 static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles with a gap
 static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
@@ -102,11 +103,12 @@ static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng
 // with the artificial stress only (not communicated: computed for ghosts from Q_A)
 static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
 static constexpr int Q_RFLAG = 26;    // 1 if R != 0
-// with the viscosity switch: alpha_i in the last column, Q_ALPHA or Q_ALPHA_AST
+// with the viscosity switch: alpha_i after those, Q_ALPHA or Q_ALPHA_AST
 static constexpr int Q_ALPHA = 20;
 static constexpr int Q_ALPHA_AST = 27;
+// with the gradient correction: B_i (9, row major) in the last columns, from qcol_b
 
-enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT };
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR };
 
 static constexpr double BIG_DT = 1.0e300;
 
@@ -116,8 +118,8 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr),
-    state(nullptr), fix_int(nullptr)
+    hq_cols(NHQ), qcol_b(-1), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0),
+    atom_contact(nullptr), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -327,9 +329,11 @@ void PairESPHSolid::settings(int narg, char **arg)
         correct_flag = 0;
       else if (strcmp(arg[iarg + 1], "corrected") == 0)
         correct_flag = 1;
+      else if (strcmp(arg[iarg + 1], "bonet/lok") == 0)
+        correct_flag = 2;
       else
         error->all(FLERR, iarg + 2,
-                   "Unknown pair esph/solid gradient {}: expected plain or corrected",
+                   "Unknown pair esph/solid gradient {}: expected plain, corrected or bonet/lok",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "artstress") == 0) {
@@ -652,7 +656,9 @@ void PairESPHSolid::setup()
 void PairESPHSolid::grow_work()
 {
   // the artificial stress keeps R next to the other hoisted quantities (memory locality)
-  const int cols = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
+  const int cols0 = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
+  qcol_b = (correct_flag == 2) ? cols0 : -1;
+  const int cols = cols0 + (qcol_b >= 0 ? 9 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
     hq_cols = cols;
@@ -794,6 +800,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
+  if (correct_flag == 2) correction();
   if (astress_flag) artificial_stress();
 
   ncontact_pairs = ntouch_pairs = 0;
@@ -813,6 +820,186 @@ void PairESPHSolid::compute(int eflag, int vflag)
   }
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   solid rule: the gap of a cross-body pair, the gaps of both particles
+   brought to the present with their rates
+------------------------------------------------------------------------- */
+
+static inline double solid_gap(const double *qi, const double *qj, double dt)
+{
+  return contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
+}
+
+/* ----------------------------------------------------------------------
+   M^-1 of the correction from its sums (row major), the out-of-plane
+   diagonal set to rho; false where M is singular (a particle with too few
+   neighbours): then the plain gradient is used
+------------------------------------------------------------------------- */
+
+static bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &Minv)
+{
+  Eigen::Matrix3d M;
+  M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
+  for (int d = dim; d < 3; d++) M(d, d) = rho;
+  if (fabs(M.determinant()) <= 1.0e-6 * rho * rho * rho) return false;
+  Minv = M.inverse();
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   the gradient correction, before the pair loop (Bonet and Lok 1999): for
+   every real particle M_i = sum_j m_j (x_j - x_i) (x) grad_i W_ij over the
+   pairs that couple in the pair loop (own body; other bodies weighted by the
+   contact gate, which depends only on the geometry), then
+   B_i = (sigma_i / rho_i) M_i^-T for owned and ghost particles. The pair
+   loop's stress force m_i m_j (B_i + B_j) grad_i W has no torque on a body:
+   sum_j m_j (x_j - x_i) (x) M_i^-T grad_i W = I leaves the symmetric
+   sigma_i. Its work is B_i : G_i (the energy), and L = G M^-1 the velocity
+   gradient, exact for linear fields
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::correction()
+{
+  if (hvar_flag)
+    correction_loop<1>();
+  else
+    correction_loop<0>();
+  if (force->newton_pair) {
+    comm_stage = COMM_CORR;
+    comm->reverse_comm(this, 9);
+  }
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const double *rmass = state->rmass;
+  const int *type = atom->type;
+  const double pin = units.pressure_in;
+  double dtmin = dt_cfl;
+  for (int i = 0; i < nlocal; i++) {
+    const double *q = hq[i];
+    const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
+    double *B = hq[i] + qcol_b;
+    Eigen::Matrix3d Minv;
+    Eigen::Matrix3d Bm;
+    if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, Minv)) {
+      Bm = q[Q_RHO] * A * Minv.transpose();
+      // the correction stiffens a particle whose kernel support is cut (a free surface,
+      // by up to about 2 normal to it) by the gain kappa, the largest singular value of
+      // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
+      // unstable at 0.3 h / c_L without this, stable at 0.25)
+      const Eigen::Matrix3d K = q[Q_RHO] * Minv;
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+      es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
+      const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
+      if (sqrt_kappa > 1.0) {
+        const double rho = q[Q_RHO];
+        const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
+        const double *v = q + Q_V;
+        const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        dtmin = std::min(dtmin, q[Q_H] / (cl * sqrt_kappa + vmag));
+      }
+    } else {
+      Bm = A;
+    }
+    for (int r = 0; r < 3; r++)
+      for (int c = 0; c < 3; c++) B[3 * r + c] = Bm(r, c);
+  }
+  dt_cfl = dtmin;
+  // the ghosts' partial sums are with their owners: the pair loop's reverse
+  // communication must not add them again
+  for (int i = nlocal; i < nall; i++)
+    for (int k = A_M; k < A_M + 9; k++) acc[i][k] = 0.0;
+  comm_stage = COMM_CORR;
+  comm->forward_comm(this, 9);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <int HVAR> void PairESPHSolid::correction_loop()
+{
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+  const double norm0 = kernel_norm(kernel, dim, h0);
+  const double hinv0 = 1.0 / h0;
+  const double gap_cap = gaptol * h0;
+  const double dt = dt_step;
+  // as in the pair loop: other bodies are coupled by the contact rule only with boundary
+  // particles, rigid particles only with other bodies
+  const int contact_on = (nboundary > 0) && (contact != CONTACT_OFF);
+  const int solid = (contact == CONTACT_SOLID);
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double mi = rmass[i];
+    if (mi == 0.0) continue;
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const int bi = body[i];
+    const int ri = rigid_flag && rigid[type[i]];
+    const double *qi = hq[i];
+    double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double mj = rmass[j];
+      if (mj == 0.0) continue;
+      const double dx[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      const int cross = contact_on && (bi != body[j]);
+      const int rj = rigid_flag && rigid[type[j]];
+      if ((ri || rj) && (!cross || (ri && rj))) continue;
+      const double *qj = hq[j];
+      // another body: weighted by the solid rule's coupling weight (smooth in time); the
+      // paper's rule switches pairs on and off from step to step, and a correction that
+      // switched with them would kick the particles: there every neighbour counts
+      double wgt = 1.0;
+      if (cross && solid) {
+        wgt = contact_pair_weight(solid_gap(qi, qj, dt), gap_cap, qi[Q_ENG], qj[Q_ENG]);
+        if (wgt == 0.0) continue;
+      }
+      double norm = norm0, hinv = hinv0;
+      if (HVAR) {
+        const double hij = 0.5 * (qi[Q_H] + qj[Q_H]);
+        hinv = 1.0 / hij;
+        norm = kernel_norm(kernel, dim, hij);
+      }
+      double w, dw;
+      if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
+      dw *= wgt;
+      const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+      // x_j - x_i = -dx for i; x_i - x_j = dx and grad_j W = -g for j
+      for (int a = 0; a < 3; a++) {
+        const double xa = -mj * dx[a];
+        mci[3 * a] += xa * g[0];
+        mci[3 * a + 1] += xa * g[1];
+        mci[3 * a + 2] += xa * g[2];
+      }
+      if (newton_pair || j < nlocal) {
+        double *aj = acc[j] + A_M;
+        for (int a = 0; a < 3; a++) {
+          const double xa = -mi * dx[a];
+          aj[3 * a] += xa * g[0];
+          aj[3 * a + 1] += xa * g[1];
+          aj[3 * a + 2] += xa * g[2];
+        }
+      }
+    }
+    double *ai = acc[i] + A_M;
+    for (int k = 0; k < 9; k++) ai[k] += mci[k];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1042,13 +1229,24 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       const double *qa = ri ? qj : qi;
       const double *qb = rj ? qi : qj;
       double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
-      const double *Ai = qa + Q_A;
-      const double *Aj = qb + Q_A;
-      const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
-                           Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
-      double Tg[3] = {T[0] * g[0] + T[3] * g[1] + T[4] * g[2],
-                      T[3] * g[0] + T[1] * g[1] + T[5] * g[2],
-                      T[4] * g[0] + T[5] * g[1] + T[2] * g[2]};
+      // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W, or with
+      // the correction (B_i + B_j) grad_i W, B = (sigma / rho) M^-T (Bonet and Lok 1999)
+      double Tg[3];
+      if (CORR == 2) {
+        const double *Bi = qa + qcol_b;
+        const double *Bj = qb + qcol_b;
+        for (int r = 0; r < 3; r++)
+          Tg[r] = (Bi[3 * r] + Bj[3 * r]) * g[0] + (Bi[3 * r + 1] + Bj[3 * r + 1]) * g[1] +
+              (Bi[3 * r + 2] + Bj[3 * r + 2]) * g[2];
+      } else {
+        const double *Ai = qa + Q_A;
+        const double *Aj = qb + Q_A;
+        const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
+                             Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
+        Tg[0] = T[0] * g[0] + T[3] * g[1] + T[4] * g[2];
+        Tg[1] = T[3] * g[0] + T[1] * g[1] + T[5] * g[2];
+        Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
+      }
       double nc[3] = {0.0, 0.0, 0.0};
       double vn = 0.0, xn = 0.0;
       double vt[3] = {0.0, 0.0, 0.0};
@@ -1115,9 +1313,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         double phi = 1.0;
         int touching;
         if (solid) {
-          // the gaps of both particles, brought to the present with their rates
-          const double gap =
-              contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
+          const double gap = solid_gap(qi, qj, dt);
           // touching: closed, or open by no more than round-off (faces that coincide in exact
           // arithmetic are a round-off distance apart in a rotated scene); counted before
           // the gate
@@ -1191,7 +1387,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         gi[3 * a + 2] += wa * g[2];
       }
       avhi += mj * avh;
-      if (CORR) {
+      if (CORR == 1) {
         // x_j - x_i = -dx
         for (int a = 0; a < 3; a++) {
           const double xa = -mj * dx[a];
@@ -1234,7 +1430,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         }
         aj[A_AVHEAT] += mi * avh;
         if (HEAT) aj[A_HEAT] -= mi * heat;
-        if (CORR)
+        if (CORR == 1)
           for (int a = 0; a < 3; a++) {
             const double xa = -mi * dx[a];
             aj[A_M + 3 * a] += xa * g[0];
@@ -1253,7 +1449,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       if (HEAT) ai[A_HEAT] += heati;
       if (XSPH)
         for (int a = 0; a < 3; a++) ai[A_XSPH + a] += xsi[a];
-      if (CORR)
+      if (CORR == 1)
         for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
     }
   }
@@ -1319,60 +1515,38 @@ void PairESPHSolid::pair_loop_select(int extra)
   }
 }
 
+template <int BND, int HVAR, int HEAT> void PairESPHSolid::run_corr()
+{
+  if (correct_flag == 2)
+    pair_loop_extra<BND, HVAR, HEAT, 2>();
+  else if (correct_flag == 1)
+    pair_loop_extra<BND, HVAR, HEAT, 1>();
+  else
+    pair_loop_extra<BND, HVAR, HEAT, 0>();
+}
+
+template <int BND, int HVAR> void PairESPHSolid::run_heat()
+{
+  if (heat_flag)
+    run_corr<BND, HVAR, 1>();
+  else
+    run_corr<BND, HVAR, 0>();
+}
+
+template <int BND> void PairESPHSolid::run_hvar()
+{
+  if (hvar_flag)
+    run_heat<BND, 1>();
+  else
+    run_heat<BND, 0>();
+}
+
 void PairESPHSolid::run_pair_loop(int bnd)
 {
-  const int key =
-      (bnd ? 8 : 0) | (hvar_flag ? 4 : 0) | (heat_flag ? 2 : 0) | (correct_flag ? 1 : 0);
-  switch (key) {
-    case 0:
-      pair_loop_extra<0, 0, 0, 0>();
-      break;
-    case 1:
-      pair_loop_extra<0, 0, 0, 1>();
-      break;
-    case 2:
-      pair_loop_extra<0, 0, 1, 0>();
-      break;
-    case 3:
-      pair_loop_extra<0, 0, 1, 1>();
-      break;
-    case 4:
-      pair_loop_extra<0, 1, 0, 0>();
-      break;
-    case 5:
-      pair_loop_extra<0, 1, 0, 1>();
-      break;
-    case 6:
-      pair_loop_extra<0, 1, 1, 0>();
-      break;
-    case 7:
-      pair_loop_extra<0, 1, 1, 1>();
-      break;
-    case 8:
-      pair_loop_extra<1, 0, 0, 0>();
-      break;
-    case 9:
-      pair_loop_extra<1, 0, 0, 1>();
-      break;
-    case 10:
-      pair_loop_extra<1, 0, 1, 0>();
-      break;
-    case 11:
-      pair_loop_extra<1, 0, 1, 1>();
-      break;
-    case 12:
-      pair_loop_extra<1, 1, 0, 0>();
-      break;
-    case 13:
-      pair_loop_extra<1, 1, 0, 1>();
-      break;
-    case 14:
-      pair_loop_extra<1, 1, 1, 0>();
-      break;
-    default:
-      pair_loop_extra<1, 1, 1, 1>();
-      break;
-  }
+  if (bnd)
+    run_hvar<1>();
+  else
+    run_hvar<0>();
 }
 
 /* ----------------------------------------------------------------------
@@ -1399,27 +1573,27 @@ void PairESPHSolid::finalize(int eflag)
       L << a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8];
       // continuity (eq. 1): drho_i = sum_j m_j (v_i - v_j).grad_i W = -tr G
       drho[i] = -(a[0] + a[4] + a[8]);
-      // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, plus viscous heating and heat transfer
-      const double *A = q + Q_A;
+      // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, with the correction B_i : G_i (the
+      // work of the corrected forces), plus viscous heating and heat transfer
       // (in energy/mass units per time, as d_esph_e is stored)
-      de[i] = (A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
-               A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]) + a[A_AVHEAT] + a[A_HEAT]) *
-          units.energy;
+      double work;
+      if (correct_flag == 2) {
+        const double *B = q + qcol_b;
+        work = 0.0;
+        for (int k = 0; k < 9; k++) work += B[k] * a[A_G + k];
+      } else {
+        const double *A = q + Q_A;
+        work = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
+            A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]);
+      }
+      de[i] = (work + a[A_AVHEAT] + a[A_HEAT]) * units.energy;
       // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
       // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
-      bool corrected = false;
-      if (correct_flag) {
-        Eigen::Matrix3d M;
-        M << a[A_M], a[A_M + 1], a[A_M + 2], a[A_M + 3], a[A_M + 4], a[A_M + 5], a[A_M + 6],
-            a[A_M + 7], a[A_M + 8];
-        for (int d = dim; d < 3; d++) M(d, d) = rho;
-        const double det = M.determinant();
-        if (fabs(det) > 1.0e-6 * rho * rho * rho) {
-          L = L * M.inverse();
-          corrected = true;
-        }
-      }
-      if (!corrected) L /= rho;
+      Eigen::Matrix3d Minv;
+      if (correct_flag && correction_inverse(a + A_M, rho, dim, Minv))
+        L = L * Minv;
+      else
+        L /= rho;
       jaumann_rate(L, sp, shear[type[i]], ds[i]);
       if (xsph_flag)
         for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
@@ -1701,6 +1875,14 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
     }
     return m;
   }
+  if (comm_stage == COMM_CORR) {
+    for (int i = 0; i < n; i++) {
+      const double *q = hq[list[i]] + qcol_b;
+      for (int k = 0; k < 9; k++) buf[m++] = q[k];
+    }
+    return m;
+  }
+  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
     for (int k = 0; k < 12; k++) buf[m++] = q[k];
@@ -1713,7 +1895,7 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       buf[m++] = q[Q_E];
       buf[m++] = q[Q_ZETA];
     }
-    if (vswitch_flag) buf[m++] = q[hq_cols - 1];
+    if (vswitch_flag) buf[m++] = q[qal];
   }
   return m;
 }
@@ -1740,6 +1922,14 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
     }
     return;
   }
+  if (comm_stage == COMM_CORR) {
+    for (int i = first; i < last; i++) {
+      double *q = hq[i] + qcol_b;
+      for (int k = 0; k < 9; k++) q[k] = buf[m++];
+    }
+    return;
+  }
+  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   for (int i = first; i < last; i++) {
     double *q = hq[i];
     for (int k = 0; k < 12; k++) q[k] = buf[m++];
@@ -1752,7 +1942,7 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       q[Q_E] = buf[m++];
       q[Q_ZETA] = buf[m++];
     }
-    if (vswitch_flag) q[hq_cols - 1] = buf[m++];
+    if (vswitch_flag) q[qal] = buf[m++];
   }
 }
 
@@ -1777,6 +1967,8 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) buf[m++] = a[k];
       for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
+    } else if (comm_stage == COMM_CORR) {
+      for (int k = A_M; k < A_M + 9; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_GAPS) {
       for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
     } else {
@@ -1810,6 +2002,9 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
     } else if (comm_stage == COMM_GAPS) {
       k0 = A_GW;
       k1 = GAP_END;
+    } else if (comm_stage == COMM_CORR) {
+      k0 = A_M;
+      k1 = A_M + 9;
     }
     const int gaps = (k1 > A_GW) && (rmass[j] == 0.0);
     for (int k = k0; k < k1; k++) {

@@ -76,7 +76,8 @@ class PairESPHSolid : public Pair {
   int contact;           // ESPH::ContactRule
   double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
   int onset;             // steps over which a newly touching particle's coupling builds up
-  int correct_flag;      // kernel-gradient corrected velocity gradient
+  int correct_flag;      // kernel-gradient correction: 0 plain, 1 velocity gradient (corrected),
+                         // 2 velocity gradient, forces and energy (bonet/lok)
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon
   int astress_n;         // its exponent n in f_ij^n, f_ij = W(r_ij) / W(dp)
@@ -106,7 +107,8 @@ class PairESPHSolid : public Pair {
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
   double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
   int hq_cols;    // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 1 with the
-                  // viscosity switch (its alpha_i, the last column)
+                  // viscosity switch (its alpha_i), + 9 with the gradient correction (B_i)
+  int qcol_b;     // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
   int comm_stage;
   int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;
@@ -147,6 +149,11 @@ class PairESPHSolid : public Pair {
   void artificial_stress();
   void atom_contact_clear();
   void run_pair_loop(int);
+  template <int BND> void run_hvar();
+  template <int BND, int HVAR> void run_heat();
+  template <int BND, int HVAR, int HEAT> void run_corr();
+  void correction();
+  template <int HVAR> void correction_loop();
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
   template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA> void pair_loop_select(int);
   template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
