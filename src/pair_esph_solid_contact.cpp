@@ -1,0 +1,259 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   pair esph/solid: contact geometry (normals and depths of the real
+   particles, surface gaps of the boundary particles) and contact bookkeeping
+------------------------------------------------------------------------- */
+
+#include "pair_esph_solid.h"
+#include "pair_esph_solid_slots.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_check.h"
+#include "esph_contact.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "esph_strength.h"
+#include "fix.h"
+#include "fix_esph_integrate.h"
+#include "force.h"
+#include "info.h"
+#include "math_special.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace ESPH;
+using namespace ESPHSolid;
+
+/* ----------------------------------------------------------------------
+   normal and depth of real particle i from its sums; the length of the
+   normal is kept as the coherence |sum n_k W| / sum W <= 1
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::store_normal(int i)
+{
+  const double *a = acc[i];
+  const double n2 =
+      a[A_NSUM] * a[A_NSUM] + a[A_NSUM + 1] * a[A_NSUM + 1] + a[A_NSUM + 2] * a[A_NSUM + 2];
+  if (n2 > 0.0 && a[A_WSUM] > 0.0) {
+    const double inv = 1.0 / a[A_WSUM];
+    for (int d = 0; d < 3; d++) state->n[i][d] = a[A_NSUM + d] * inv;
+    state->depth[i] = a[A_DSUM] * inv;
+  } else {
+    state->n[i][0] = state->n[i][1] = state->n[i][2] = 0.0;
+    state->depth[i] = 0.0;
+  }
+  // the gap from the boundary particles of the own body, at the time of this computation
+  if (contact == CONTACT_SOLID && a[A_GW] > 0.0) {
+    state->gap[i] = a[A_GG] / a[A_GW];
+    state->gapv[i] = a[A_GV] / a[A_GW];
+  } else {
+    state->gap[i] = GAP_NONE;
+    state->gapv[i] = 0.0;
+  }
+  // engagement for the next computation, from the gap it will see; the stored value is
+  // the one this computation used until now (hoisted)
+  state->eng[i] = (contact == CONTACT_SOLID)
+      ? contact_engage(hq[i][Q_ENG], state->gap[i] + dt_step * state->gapv[i] - GAP_EPS * h0, onset)
+      : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the tally of the pair of bodies a, b (in either order) of this compute
+------------------------------------------------------------------------- */
+
+std::array<double, 3> &PairESPHSolid::tally_bodies(int a, int b)
+{
+  const auto key = (a < b) ? std::make_pair(a, b) : std::make_pair(b, a);
+  auto it = body_tally.find(key);
+  if (it == body_tally.end())
+    it = body_tally.emplace(key, std::array<double, 3>{0.0, 0.0, 0.0}).first;
+  return it->second;
+}
+
+/* ----------------------------------------------------------------------
+   gap of boundary particle i from its best facing partner of another body
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::store_bnd_gap(int i)
+{
+  if (!contact_bnd_result(acc[i] + B_GAP, state->gap[i], state->gapv[i])) {
+    state->gap[i] = GAP_NONE;
+    state->gapv[i] = 0.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   normals (eq. 30) and depths of real particles from the boundary particles
+   of their own body; used at the start of a run, later they come with the
+   regular pair loop
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::compute_normals()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+  const int solid = (contact == CONTACT_SOLID);
+
+  // normals, h and velocities of the boundary particles must be known on ghosts
+  for (int i = 0; i < nlocal; i++) {
+    for (int d = 0; d < 3; d++) {
+      hq[i][Q_N + d] = state->n[i][d];
+      hq[i][Q_V + d] = v[i][d];
+    }
+    hq[i][Q_H] = state->h[i];
+    hq[i][Q_ENG] = state->eng[i];
+  }
+  comm_stage = COMM_NORMALS;
+  comm->forward_comm(this, 7);
+  for (int i = 0; i < nall; i++) {
+    for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
+    for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
+  }
+
+  // pass 1: normal sums of real particles, gaps of boundary particles
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      if (rmass[i] == 0.0 && rmass[j] == 0.0) {
+        if (solid && body[i] != body[j])
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx,
+                       GAP_EPS * h0);
+        continue;
+      }
+      if (rmass[i] > 0.0 && rmass[j] > 0.0) continue;
+      if (body[i] != body[j]) continue;
+      const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
+      double w, dw;
+      if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w, dw))
+        continue;
+      const int p = (rmass[i] > 0.0) ? i : j;
+      const int k = (p == i) ? j : i;
+      if (p >= nlocal && !newton_pair && p != i) continue;
+      const double sgn = (k == i) ? 1.0 : -1.0;
+      add_normal_sums(acc[p], w, sgn, dx, hq[k] + Q_N);
+    }
+  }
+  if (newton_pair) {
+    comm_stage = COMM_NORMALS;
+    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW));
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (rmass[i] == 0.0) {
+      store_bnd_gap(i);
+      hq[i][Q_GAP] = state->gap[i];
+      hq[i][Q_GAPV] = state->gapv[i];
+    } else {
+      for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
+    }
+  }
+
+  // pass 2: gaps of real particles from their own boundary particles
+  if (solid) {
+    comm_stage = COMM_GAPS;
+    comm->forward_comm(this, 2);
+    for (int i = nlocal; i < nall; i++)
+      for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if ((rmass[i] == 0.0) == (rmass[j] == 0.0)) continue;
+        if (body[i] != body[j]) continue;
+        const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+        const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+        if (rsq >= cutsq_global) continue;
+        const double hij = hvar_flag ? 0.5 * (hq[i][Q_H] + hq[j][Q_H]) : h0;
+        double w, dw;
+        if (!kernel_eval(kernel, dim, kernel_norm(kernel, dim, hij), 1.0 / hij, sqrt(rsq), w, dw))
+          continue;
+        const int p = (rmass[i] > 0.0) ? i : j;
+        const int k = (p == i) ? j : i;
+        if (p >= nlocal && !newton_pair && p != i) continue;
+        // the gaps are of this moment: no extrapolation
+        add_gap_sums(acc[p], w, hq[k], 0.0);
+      }
+    }
+    if (newton_pair) {
+      comm_stage = COMM_GAPS;
+      comm->reverse_comm(this, GAP_END - A_GW);
+    }
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (rmass[i] == 0.0) continue;
+    store_normal(i);
+    // the force computation brings the gap forward by one step: it is of now
+    if (state->gap[i] < GAP_NONE) state->gap[i] -= update->dt * state->gapv[i];
+  }
+  normals_valid = 1;
+}
+
+/* ----------------------------------------------------------------------
+   normal, surface gap, gap rate and engagement (6 values) of owned atom i that the
+   last force computation used (its hoisted copy; valid until the next
+   computation); false before any computation
+------------------------------------------------------------------------- */
+
+bool PairESPHSolid::geometry_used(int i, double *out) const
+{
+  if (!hq) return false;
+  const double *q = hq[i];
+  for (int k = 0; k < 3; k++) out[k] = q[Q_N + k];
+  out[3] = q[Q_GAP];
+  out[4] = q[Q_GAPV];
+  out[5] = q[Q_ENG];
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   per-atom contact output for compute esph/atom: zeroed for owned and
+   ghost atoms before the pair loop, which adds to it for every interacting
+   cross-body pair (count, transmitted compressive normal force)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::atom_contact_clear()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > atom_contact_nmax) {
+    atom_contact_nmax = atom->nmax;
+    memory->destroy(atom_contact);
+    memory->create(atom_contact, atom_contact_nmax, 2, "pair:atom_contact");
+  }
+  if (nall > 0) memset(&atom_contact[0][0], 0, sizeof(double) * 2 * nall);
+}

@@ -1,0 +1,204 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   pair esph/solid: the gradient correction pass of gradient bonet/lok
+   (Bonet and Lok 1999)
+------------------------------------------------------------------------- */
+
+#include "pair_esph_solid.h"
+#include "pair_esph_solid_slots.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_check.h"
+#include "esph_contact.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "esph_strength.h"
+#include "fix.h"
+#include "fix_esph_integrate.h"
+#include "force.h"
+#include "info.h"
+#include "math_special.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace ESPH;
+using namespace ESPHSolid;
+
+/* ----------------------------------------------------------------------
+   the gradient correction, before the pair loop (Bonet and Lok 1999): for
+   every real particle M_i = sum_j m_j (x_j - x_i) (x) grad_i W_ij over the
+   pairs that couple in the pair loop (own body; other bodies weighted by the
+   contact gate, which depends only on the geometry), then
+   B_i = (sigma_i / rho_i) M_i^-T for owned and ghost particles. The pair
+   loop's stress force m_i m_j (B_i + B_j) grad_i W has no torque on a body:
+   sum_j m_j (x_j - x_i) (x) M_i^-T grad_i W = I leaves the symmetric
+   sigma_i. Its work is B_i : G_i (the energy), and L = G M^-1 the velocity
+   gradient, exact for linear fields
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::correction()
+{
+  if (hvar_flag)
+    correction_loop<1>();
+  else
+    correction_loop<0>();
+  if (force->newton_pair) {
+    comm_stage = COMM_CORR;
+    comm->reverse_comm(this, 9);
+  }
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const double *rmass = state->rmass;
+  const int *type = atom->type;
+  const double pin = units.pressure_in;
+  double dtmin = dt_cfl;
+  for (int i = 0; i < nlocal; i++) {
+    const double *q = hq[i];
+    const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
+    double *B = hq[i] + qcol_b;
+    Eigen::Matrix3d Minv;
+    Eigen::Matrix3d Bm;
+    if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, Minv)) {
+      Bm = q[Q_RHO] * A * Minv.transpose();
+      // the correction stiffens a particle whose kernel support is cut (a free surface,
+      // by up to about 2 normal to it) by the gain kappa, the largest singular value of
+      // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
+      // unstable at 0.3 h / c_L without this, stable at 0.25)
+      const Eigen::Matrix3d K = q[Q_RHO] * Minv;
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+      es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
+      const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
+      if (sqrt_kappa > 1.0) {
+        const double rho = q[Q_RHO];
+        const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
+        const double *v = q + Q_V;
+        const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        dtmin = std::min(dtmin, q[Q_H] / (cl * sqrt_kappa + vmag));
+      }
+    } else {
+      Bm = A;
+    }
+    for (int r = 0; r < 3; r++)
+      for (int c = 0; c < 3; c++) B[3 * r + c] = Bm(r, c);
+  }
+  dt_cfl = dtmin;
+  // the ghosts' partial sums are with their owners: the pair loop's reverse
+  // communication must not add them again
+  for (int i = nlocal; i < nall; i++)
+    for (int k = A_M; k < A_M + 9; k++) acc[i][k] = 0.0;
+  comm_stage = COMM_CORR;
+  comm->forward_comm(this, 9);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <int HVAR> void PairESPHSolid::correction_loop()
+{
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+  const double norm0 = kernel_norm(kernel, dim, h0);
+  const double hinv0 = 1.0 / h0;
+  const double gap_cap = gaptol * h0;
+  const double dt = dt_step;
+  // as in the pair loop: other bodies are coupled by the contact rule only with boundary
+  // particles, rigid particles only with other bodies
+  const int contact_on = (nboundary > 0) && (contact != CONTACT_OFF);
+  const int solid = (contact == CONTACT_SOLID);
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double mi = rmass[i];
+    if (mi == 0.0) continue;
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const int bi = body[i];
+    const int ri = rigid_flag && rigid[type[i]];
+    const double *qi = hq[i];
+    double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double mj = rmass[j];
+      if (mj == 0.0) continue;
+      const double dx[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      const int cross = contact_on && (bi != body[j]);
+      const int rj = rigid_flag && rigid[type[j]];
+      if ((ri || rj) && (!cross || (ri && rj))) continue;
+      const double *qj = hq[j];
+      // another body: weighted by the solid rule's coupling weight (smooth in time); the
+      // paper's rule switches pairs on and off from step to step, and a correction that
+      // switched with them would kick the particles: there every neighbour counts
+      double wgt = 1.0;
+      if (cross && solid) {
+        wgt = contact_pair_weight(solid_gap(qi, qj, dt), gap_cap, qi[Q_ENG], qj[Q_ENG]);
+        if (wgt == 0.0) continue;
+      }
+      double norm = norm0, hinv = hinv0;
+      if (HVAR) {
+        const double hij = 0.5 * (qi[Q_H] + qj[Q_H]);
+        hinv = 1.0 / hij;
+        norm = kernel_norm(kernel, dim, hij);
+      }
+      double w, dw;
+      if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
+      dw *= wgt;
+      const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+      // x_j - x_i = -dx for i; x_i - x_j = dx and grad_j W = -g for j
+      for (int a = 0; a < 3; a++) {
+        const double xa = -mj * dx[a];
+        mci[3 * a] += xa * g[0];
+        mci[3 * a + 1] += xa * g[1];
+        mci[3 * a + 2] += xa * g[2];
+      }
+      if (newton_pair || j < nlocal) {
+        double *aj = acc[j] + A_M;
+        for (int a = 0; a < 3; a++) {
+          const double xa = -mi * dx[a];
+          aj[3 * a] += xa * g[0];
+          aj[3 * a + 1] += xa * g[1];
+          aj[3 * a + 2] += xa * g[2];
+        }
+      }
+    }
+    double *ai = acc[i] + A_M;
+    for (int k = 0; k < 9; k++) ai[k] += mci[k];
+  }
+}

@@ -1,0 +1,518 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   pair esph/solid: the pair loop and its compile-time dispatch
+------------------------------------------------------------------------- */
+
+#include "pair_esph_solid.h"
+#include "pair_esph_solid_slots.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "esph_check.h"
+#include "esph_contact.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "esph_strength.h"
+#include "fix.h"
+#include "fix_esph_integrate.h"
+#include "force.h"
+#include "info.h"
+#include "math_special.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace ESPH;
+using namespace ESPHSolid;
+
+/* ----------------------------------------------------------------------
+   the pair loop: one pass over the half neighbour list
+   real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
+   real-real other body: contact rule (section 4.3), normal components only
+   real-boundary same body: interpolation to the boundary particle (4.2) and
+     the real particle's normal sums (eq. 30)
+------------------------------------------------------------------------- */
+
+template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::pair_loop()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const tagint *tag = atom->tag;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double cutsq_global = cut_global * cut_global;
+
+  // constant h: kernel normalisation once
+  const double norm0 = kernel_norm(kernel, dim, h0);
+  const double hinv0 = 1.0 / h0;
+  const double gap_cap = gaptol * h0;
+  const double gap_eps = GAP_EPS * h0;
+  const double dt = dt_step;
+  // pair forces in force units (atom->f, the contact force); all else internal
+  const double fconv = units.force;
+  const int solid = (contact == CONTACT_SOLID);
+  // artificial stress: 1 / W(dp) at constant h
+  double wdp_inv0 = 0.0;
+  constexpr int AST = EXTRA & EXTRA_ASTRESS;
+  constexpr int XSPH = EXTRA & EXTRA_XSPH;
+  constexpr int FRIC = BND && (EXTRA & EXTRA_FRICTION);
+  constexpr int RIG = BND && (EXTRA & EXTRA_RIGID);
+  constexpr int VSW = EXTRA & EXTRA_VSWITCH;
+  constexpr int QAL = AST ? Q_ALPHA_AST : Q_ALPHA;
+  // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
+  const double beta_ratio = (VSW && alpha > 0.0) ? beta / alpha : 0.0;
+  if (AST) {
+    double wdp, dwdp;
+    kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
+    wdp_inv0 = 1.0 / wdp;
+  }
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double mi = rmass[i];
+    const int bi = body[i];
+    const double *qi = hq[i];
+    // sums for i in registers (acc[i] and acc[j] could alias for the compiler)
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    double gi[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double avhi = 0.0, heati = 0.0;
+    double xsi[3] = {0.0, 0.0, 0.0};
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq_global) continue;
+      const double mj = rmass[j];
+      if (BND && mi == 0.0 && mj == 0.0) {
+        // two boundary particles: the surface gap between different bodies
+        if (solid && bi != body[j])
+          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
+                       gap_eps);
+        continue;
+      }
+      const double *qj = hq[j];
+
+      double hij, norm, hinv;
+      if (HVAR) {
+        hij = 0.5 * (qi[Q_H] + qj[Q_H]);
+        hinv = 1.0 / hij;
+        norm = kernel_norm(kernel, dim, hij);
+      } else {
+        hij = h0;
+        hinv = hinv0;
+        norm = norm0;
+      }
+      double w, dw;
+      if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
+      const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+      const int jown = (newton_pair || j < nlocal);
+
+      if (BND && (mi == 0.0 || mj == 0.0)) {
+        // boundary particle k and real particle p of the same body
+        if (bi != body[j]) continue;
+        int k, p;
+        double sgn;
+        if (mi == 0.0) {
+          k = i;
+          p = j;
+          sgn = 1.0;
+        } else {
+          k = j;
+          p = i;
+          sgn = -1.0;
+        }
+        const double *qp = hq[p];
+        const double *qk = hq[k];
+        if (k < nlocal || newton_pair || k == i) {
+          // grad_k W_kp = sgn * g
+          double *ak = acc[k];
+          const double Vp = rmass[p] / qp[Q_RHO];
+          const double gk[3] = {sgn * g[0], sgn * g[1], sgn * g[2]};
+          for (int a = 0; a < 3; a++) {
+            const double va = Vp * qp[Q_V + a];
+            ak[B_A + 3 * a] += va * gk[0];
+            ak[B_A + 3 * a + 1] += va * gk[1];
+            ak[B_A + 3 * a + 2] += va * gk[2];
+            ak[B_B + a] += Vp * gk[a];
+            ak[B_VSUM + a] += Vp * w * qp[Q_V + a];
+            // x_p - x_k = -sgn * dx
+            const double xa = -sgn * Vp * dx[a];
+            ak[B_M + 3 * a] += xa * gk[0];
+            ak[B_M + 3 * a + 1] += xa * gk[1];
+            ak[B_M + 3 * a + 2] += xa * gk[2];
+            ak[B_XSUM + a] += xa * w;
+          }
+          ak[B_WSUM] += Vp * w;
+        }
+        if (p < nlocal || newton_pair || p == i) {
+          add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
+          if (solid) add_gap_sums(acc[p], w, qk, dt);
+        }
+        continue;
+      }
+
+      // two real particles
+      const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
+      // a rigid particle (pair_coeff ... rigid yes) meets only deformable ones of other
+      // bodies, as the mirror image of its partner: stress, sound speed and density of the
+      // partner, twice the normal relative velocity (below): the reaction of a rigid wall
+      const int ri = RIG && rigid[type[i]], rj = RIG && rigid[type[j]];
+      if ((ri || rj) && (!cross || (ri && rj))) continue;
+      const double *qa = ri ? qj : qi;
+      const double *qb = rj ? qi : qj;
+      double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
+      // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W, or with
+      // the correction (B_i + B_j) grad_i W, B = (sigma / rho) M^-T (Bonet and Lok 1999)
+      double Tg[3];
+      if (CORR == 2) {
+        const double *Bi = qa + qcol_b;
+        const double *Bj = qb + qcol_b;
+        for (int r = 0; r < 3; r++)
+          Tg[r] = (Bi[3 * r] + Bj[3 * r]) * g[0] + (Bi[3 * r + 1] + Bj[3 * r + 1]) * g[1] +
+              (Bi[3 * r + 2] + Bj[3 * r + 2]) * g[2];
+      } else {
+        const double *Ai = qa + Q_A;
+        const double *Aj = qb + Q_A;
+        const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
+                             Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
+        Tg[0] = T[0] * g[0] + T[3] * g[1] + T[4] * g[2];
+        Tg[1] = T[3] * g[0] + T[1] * g[1] + T[5] * g[2];
+        Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
+      }
+      double nc[3] = {0.0, 0.0, 0.0};
+      double vn = 0.0, xn = 0.0;
+      double vt[3] = {0.0, 0.0, 0.0};
+      if (cross) {
+        contact_normal(qi + Q_N, qj + Q_N, dx, nc);
+        vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
+        xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
+        // the slip velocity (of i against j) for friction
+        if (FRIC)
+          for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
+        if (RIG && (ri || rj)) vn *= 2.0;
+        // only the normal relative velocity couples across the interface
+        vij[0] = vn * nc[0];
+        vij[1] = vn * nc[1];
+        vij[2] = vn * nc[2];
+      }
+
+      // Monaghan-Gingold artificial viscosity (eqs. 4-7)
+      const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
+      double pi_ij = 0.0;
+      if (vr < 0.0) {
+        const double mu = hij * vr / (rsq + eps * hij * hij);
+        double al = alpha, be = beta;
+        if (VSW) {
+          // Morris-Monaghan switch: the mean of the two particles' alpha
+          al = 0.5 * (qa[QAL] + qb[QAL]);
+          be = beta_ratio * al;
+        }
+        pi_ij =
+            (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) / (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
+      }
+      // heating by the artificial viscosity and stress, half to each particle
+      double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
+      if (AST && !cross && (qi[Q_RFLAG] + qj[Q_RFLAG] > 0.0)) {
+        // Monaghan (2000) artificial stress f_ij^n (R_i + R_j): a repulsion between
+        // particles in tension, R = -epsilon sigma'/rho^2 in the principal frame
+        double wdp_inv = wdp_inv0;
+        if (HVAR) {
+          double wdp, dwdp;
+          kernel_eval(kernel, dim, norm, hinv, astress_dp, wdp, dwdp);
+          wdp_inv = 1.0 / wdp;
+        }
+        const double fn = MathSpecial::powint(w * wdp_inv, astress_n);
+        const double *Ri = qi + Q_R;
+        const double *Rj = qj + Q_R;
+        const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
+                             fn * (Ri[3] + Rj[3]), fn * (Ri[4] + Rj[4]), fn * (Ri[5] + Rj[5])};
+        const double Rg[3] = {R[0] * g[0] + R[3] * g[1] + R[4] * g[2],
+                              R[3] * g[0] + R[1] * g[1] + R[5] * g[2],
+                              R[4] * g[0] + R[5] * g[1] + R[2] * g[2]};
+        Tg[0] += Rg[0];
+        Tg[1] += Rg[1];
+        Tg[2] += Rg[2];
+        avh -= 0.5 * (vij[0] * Rg[0] + vij[1] * Rg[1] + vij[2] * Rg[2]);
+      }
+      const double mm = mi * mj * fconv;
+      double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
+                      mm * (Tg[2] - pi_ij * g[2])};
+
+      if (cross) {
+        double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
+        // with newton off a pair with a ghost partner is on two ranks: count it once
+        const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
+        double phi = 1.0;
+        int touching;
+        if (solid) {
+          const double gap = solid_gap(qi, qj, dt);
+          // touching: closed, or open by no more than round-off (faces that coincide in exact
+          // arithmetic are a round-off distance apart in a rotated scene); counted before
+          // the gate
+          touching = (gap <= gap_eps);
+          phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
+        } else {
+          // the paper's rule measures no gap: an interacting pair is a touching one
+          touching = contact_approach(vn, xn);
+        }
+        if (touching && count_pair) {
+          ntouch_pairs++;
+          tally_bodies(bi, body[j])[0] += 1.0;
+        }
+        // solid: no tension across contact, a pair that would pull (or not push) does not
+        // interact at all (also not in the strain rate and energy, which would otherwise see
+        // work that no force does); paper: only approaching pairs interact
+        if (solid ? (phi == 0.0 || fn >= 0.0) : !touching) continue;
+        // the coupling weight scales force, strain rate and heating alike, so that the
+        // work of the force is what the internal energy receives
+        fn *= phi;
+        avh *= phi;
+        for (int a = 0; a < 3; a++) vij[a] *= phi;
+        ff[0] = fn * nc[0];
+        ff[1] = fn * nc[1];
+        ff[2] = fn * nc[2];
+        if (FRIC) {
+          // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
+          // to each particle (below the slip speed at which that force would reverse the
+          // slip, the force that stops it)
+          const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
+          if (vt2 > 0.0) {
+            const double vtm = sqrt(vt2);
+            const double fstick = mm / (mi + mj) * vtm / (STICK_SHARE * dt);
+            const double ft = std::min(-friction * fn, fstick);
+            const double s = ft / vtm;
+            for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
+            avh += 0.5 * ft * vtm / mm;
+          }
+        }
+        // transmitted compressive normal force; with newton off a pair with a ghost
+        // partner is seen by two ranks
+        const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
+        fcontact += fpair;
+        auto &tb = tally_bodies(bi, body[j]);
+        tb[2] += fpair;
+        if (count_pair) {
+          ncontact_pairs++;
+          tb[1] += 1.0;
+        }
+        // per-atom contact output of compute esph/atom, only when one asks for it
+        if (atom_contact_flag) {
+          double **catom = atom_contact;
+          catom[i][0] += 1.0;
+          catom[i][1] -= fn;
+          if (jown) {
+            catom[j][0] += 1.0;
+            catom[j][1] -= fn;
+          }
+        }
+      }
+
+      fxi += ff[0];
+      fyi += ff[1];
+      fzi += ff[2];
+
+      // G = sum_j m_j (v_j - v_i) (x) grad_i W, for i and j alike
+      for (int a = 0; a < 3; a++) {
+        const double wa = -mj * vij[a];
+        gi[3 * a] += wa * g[0];
+        gi[3 * a + 1] += wa * g[1];
+        gi[3 * a + 2] += wa * g[2];
+      }
+      avhi += mj * avh;
+      if (CORR == 1) {
+        // x_j - x_i = -dx
+        for (int a = 0; a < 3; a++) {
+          const double xa = -mj * dx[a];
+          mci[3 * a] += xa * g[0];
+          mci[3 * a + 1] += xa * g[1];
+          mci[3 * a + 2] += xa * g[2];
+        }
+      }
+      double heat = 0.0;
+      if (HEAT && !cross) {
+        // artificial heat transfer (eqs. 8-10), conservative pairwise form
+        const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
+        const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
+        heat = 2.0 * zbar / rbar * (qi[Q_E] - qj[Q_E]) * dw * rsq / (rsq + eps * hij * hij);
+        heati += mj * heat;
+      }
+
+      // XSPH (Monaghan 1989): particles move with the velocity smoothed over their
+      // own body, xsph_i = sum_j m_j / rhobar_ij (v_j - v_i) W_ij
+      double wx = 0.0;
+      if (XSPH && !cross) {
+        wx = w / (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
+        xsi[0] -= mj * wx * vij[0];
+        xsi[1] -= mj * wx * vij[1];
+        xsi[2] -= mj * wx * vij[2];
+      }
+
+      if (jown) {
+        double *aj = acc[j];
+        if (XSPH && !cross)
+          for (int a = 0; a < 3; a++) aj[A_XSPH + a] += mi * wx * vij[a];
+        f[j][0] -= ff[0];
+        f[j][1] -= ff[1];
+        f[j][2] -= ff[2];
+        for (int a = 0; a < 3; a++) {
+          const double wa = -mi * vij[a];
+          aj[A_G + 3 * a] += wa * g[0];
+          aj[A_G + 3 * a + 1] += wa * g[1];
+          aj[A_G + 3 * a + 2] += wa * g[2];
+        }
+        aj[A_AVHEAT] += mi * avh;
+        if (HEAT) aj[A_HEAT] -= mi * heat;
+        if (CORR == 1)
+          for (int a = 0; a < 3; a++) {
+            const double xa = -mi * dx[a];
+            aj[A_M + 3 * a] += xa * g[0];
+            aj[A_M + 3 * a + 1] += xa * g[1];
+            aj[A_M + 3 * a + 2] += xa * g[2];
+          }
+      }
+    }
+    f[i][0] += fxi;
+    f[i][1] += fyi;
+    f[i][2] += fzi;
+    if (mi > 0.0) {
+      double *ai = acc[i];
+      for (int k = 0; k < 9; k++) ai[A_G + k] += gi[k];
+      ai[A_AVHEAT] += avhi;
+      if (HEAT) ai[A_HEAT] += heati;
+      if (XSPH)
+        for (int a = 0; a < 3; a++) ai[A_XSPH + a] += xsi[a];
+      if (CORR == 1)
+        for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   dispatch: optional physics switched off is compiled out of the pair loop
+------------------------------------------------------------------------- */
+
+template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
+{
+  const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0) |
+      (vswitch_flag ? EXTRA_VSWITCH : 0);
+  // friction and rigid bodies act between bodies only: with boundary particles
+  if constexpr (BND) {
+    const int fric = (friction > 0.0 && contact != CONTACT_OFF);
+    switch ((fric ? EXTRA_FRICTION : 0) | (rigid_flag ? EXTRA_RIGID : 0)) {
+      case EXTRA_FRICTION:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
+        return;
+      case EXTRA_RIGID:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_RIGID>(extra);
+        return;
+      case EXTRA_FRICTION | EXTRA_RIGID:
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION | EXTRA_RIGID>(extra);
+        return;
+      default:
+        break;
+    }
+  }
+  pair_loop_select<BND, HVAR, HEAT, CORR, 0>(extra);
+}
+
+template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA>
+void PairESPHSolid::pair_loop_select(int extra)
+{
+  switch (extra) {
+    case 0:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA>();
+      break;
+    case EXTRA_ASTRESS:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS>();
+      break;
+    case EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_XSPH>();
+      break;
+    case EXTRA_ASTRESS | EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>();
+      break;
+    case EXTRA_VSWITCH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH>();
+      break;
+    case EXTRA_VSWITCH | EXTRA_ASTRESS:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS>();
+      break;
+    case EXTRA_VSWITCH | EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_XSPH>();
+      break;
+    default:
+      pair_loop<BND, HVAR, HEAT, CORR,
+                CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS | EXTRA_XSPH>();
+      break;
+  }
+}
+
+template <int BND, int HVAR, int HEAT> void PairESPHSolid::run_corr()
+{
+  if (correct_flag == 2)
+    pair_loop_extra<BND, HVAR, HEAT, 2>();
+  else if (correct_flag == 1)
+    pair_loop_extra<BND, HVAR, HEAT, 1>();
+  else
+    pair_loop_extra<BND, HVAR, HEAT, 0>();
+}
+
+template <int BND, int HVAR> void PairESPHSolid::run_heat()
+{
+  if (heat_flag)
+    run_corr<BND, HVAR, 1>();
+  else
+    run_corr<BND, HVAR, 0>();
+}
+
+template <int BND> void PairESPHSolid::run_hvar()
+{
+  if (hvar_flag)
+    run_heat<BND, 1>();
+  else
+    run_heat<BND, 0>();
+}
+
+void PairESPHSolid::run_pair_loop(int bnd)
+{
+  if (bnd)
+    run_hvar<1>();
+  else
+    run_hvar<0>();
+}
