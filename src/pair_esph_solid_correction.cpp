@@ -21,29 +21,17 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "domain.h"
-#include "error.h"
-#include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
 #include "esph_strength.h"
-#include "fix.h"
-#include "fix_esph_integrate.h"
 #include "force.h"
-#include "info.h"
-#include "math_special.h"
-#include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
-#include "neighbor.h"
-#include "update.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace ESPH;
