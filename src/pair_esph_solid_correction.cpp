@@ -170,21 +170,8 @@ template <int HVAR> void PairESPHSolid::correction_loop()
       dw *= wgt;
       const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
       // x_j - x_i = -dx for i; x_i - x_j = dx and grad_j W = -g for j
-      for (int a = 0; a < 3; a++) {
-        const double xa = -mj * dx[a];
-        mci[3 * a] += xa * g[0];
-        mci[3 * a + 1] += xa * g[1];
-        mci[3 * a + 2] += xa * g[2];
-      }
-      if (newton_pair || j < nlocal) {
-        double *aj = acc[j] + A_M;
-        for (int a = 0; a < 3; a++) {
-          const double xa = -mi * dx[a];
-          aj[3 * a] += xa * g[0];
-          aj[3 * a + 1] += xa * g[1];
-          aj[3 * a + 2] += xa * g[2];
-        }
-      }
+      add_outer(mci, -mj, dx, g);
+      if (newton_pair || j < nlocal) add_outer(acc[j] + A_M, -mi, dx, g);
     }
     double *ai = acc[i] + A_M;
     for (int k = 0; k < 9; k++) ai[k] += mci[k];

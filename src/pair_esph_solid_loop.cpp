@@ -340,15 +340,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         gi[3 * a + 2] += wa * g[2];
       }
       avhi += mj * avh;
-      if (CORR == 1) {
-        // x_j - x_i = -dx
-        for (int a = 0; a < 3; a++) {
-          const double xa = -mj * dx[a];
-          mci[3 * a] += xa * g[0];
-          mci[3 * a + 1] += xa * g[1];
-          mci[3 * a + 2] += xa * g[2];
-        }
-      }
+      // x_j - x_i = -dx
+      if (CORR == 1) add_outer(mci, -mj, dx, g);
       double heat = 0.0;
       if (HEAT && !cross) {
         // artificial heat transfer (eqs. 8-10), conservative pairwise form
@@ -383,13 +376,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         }
         aj[A_AVHEAT] += mi * avh;
         if (HEAT) aj[A_HEAT] -= mi * heat;
-        if (CORR == 1)
-          for (int a = 0; a < 3; a++) {
-            const double xa = -mi * dx[a];
-            aj[A_M + 3 * a] += xa * g[0];
-            aj[A_M + 3 * a + 1] += xa * g[1];
-            aj[A_M + 3 * a + 2] += xa * g[2];
-          }
+        if (CORR == 1) add_outer(aj + A_M, -mi, dx, g);
       }
     }
     f[i][0] += fxi;

@@ -24,146 +24,159 @@
 #include <Eigen/LU>
 #include <cmath>
 
-namespace LAMMPS_NS {
 namespace ESPHSolid {
 
-  using namespace ESPH;
+using namespace ESPH;
 
-  // slots of the accumulator array acc[i][*]
-  // real particles
-  static constexpr int A_G = 0;         // 0..8: G = sum_j m_j (v_j - v_i) (x) grad_i W_ij
-  static constexpr int A_AVHEAT = 9;    // viscous heating
-  static constexpr int A_HEAT = 10;     // artificial heat transfer
-  static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
-  static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
-  static constexpr int A_WSUM = 15;     // sum_k W_ik
-  // 16..24: M_i = sum_j m_j (x_j - x_i) (x) grad_i W_ij (gradient corrected), summed by the
-  // correction pass before the pair loop
-  static constexpr int A_M = 16;
-  static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i) W_ij (xsph)
-  static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles with a gap
-  static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
-  static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
-  // end of the gap slots, communicated together: A_GW..A_GV of real particles (slot 31
-  // unused), B_GAP..B_GAP+3 of boundary particles
-  static constexpr int GAP_END = 32;
-  // length that regularises the alignment score of two boundary particles, and below which
-  // an open gap counts as touching (round-off of coinciding faces), in h0
-  static constexpr double GAP_EPS = 1.0e-6;
+// slots of the accumulator array acc[i][*]
+// real particles
+static constexpr int A_G = 0;         // 0..8: G = sum_j m_j (v_j - v_i) (x) grad_i W_ij
+static constexpr int A_AVHEAT = 9;    // viscous heating
+static constexpr int A_HEAT = 10;     // artificial heat transfer
+static constexpr int A_NSUM = 11;     // 11..13: sum_k n_k W_ik over boundary particles k
+static constexpr int A_DSUM = 14;     // sum_k W_ik (x_k - x_i).n_k
+static constexpr int A_WSUM = 15;     // sum_k W_ik
+// 16..24: M_i = sum_j m_j (x_j - x_i) (x) grad_i W_ij, summed by the pair loop (gradient
+// corrected) or by the correction pass before it (gradient bonet/lok)
+static constexpr int A_M = 16;
+static constexpr int A_XSPH = 25;    // 25..27: sum_j m_j / rhobar_ij (v_j - v_i) W_ij (xsph)
+static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles with a gap
+static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
+static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
+// end of the gap slots, communicated together: A_GW..A_GV of real particles (slot 31
+// unused), B_GAP..B_GAP+3 of boundary particles
+static constexpr int GAP_END = 32;
+// length that regularises the alignment score of two boundary particles, and below which
+// an open gap counts as touching (round-off of coinciding faces), in h0
+static constexpr double GAP_EPS = 1.0e-6;
 
-  // optional pair terms, bits of the last template parameter of pair_loop()
-  static constexpr int EXTRA_ASTRESS = 1;
-  static constexpr int EXTRA_XSPH = 2;
-  static constexpr int EXTRA_FRICTION = 4;
-  static constexpr int EXTRA_RIGID = 8;
-  static constexpr int EXTRA_VSWITCH = 16;
-  // the friction of a pair never exceeds the force that would stop the pair's slip within
-  // 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
-  static constexpr double STICK_SHARE = 32.0;
-  // boundary particles
-  static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
-  static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
-  static constexpr int B_VSUM = 12;    // 12..14: sum_p V_p W_kp v_p
-  static constexpr int B_WSUM = 15;    // sum_p V_p W_kp
-  static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
-  static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
-  static constexpr int B_GAP = 28;     // 28..31: facing partners (contact_bnd_merge)
+// optional pair terms, bits of the last template parameter of pair_loop()
+static constexpr int EXTRA_ASTRESS = 1;
+static constexpr int EXTRA_XSPH = 2;
+static constexpr int EXTRA_FRICTION = 4;
+static constexpr int EXTRA_RIGID = 8;
+static constexpr int EXTRA_VSWITCH = 16;
+// the friction of a pair never exceeds the force that would stop the pair's slip within
+// 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
+static constexpr double STICK_SHARE = 32.0;
+// boundary particles
+static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
+static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
+static constexpr int B_VSUM = 12;    // 12..14: sum_p V_p W_kp v_p
+static constexpr int B_WSUM = 15;    // sum_p V_p W_kp
+static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k W_kp
+static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
+static constexpr int B_GAP = 28;     // 28..31: facing partners (contact_bnd_merge)
 
-  // slots of the hoisted array hq[i][*]
-  static constexpr int Q_V = 0;    // 0..2 predicted velocity
-  static constexpr int Q_RHO = 3;
-  static constexpr int Q_C = 4;
-  static constexpr int Q_H = 5;
-  static constexpr int Q_A = 6;       // 6..11 sigma / rho^2 (Voigt)
-  static constexpr int Q_N = 12;      // 12..14 normal
-  static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
-  static constexpr int Q_E = 16;
-  static constexpr int Q_ZETA = 17;
-  static constexpr int Q_GAPV = 18;    // its rate (d_esph_gapv)
-  static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng)
-  // with the artificial stress only (not communicated: computed for ghosts from Q_A)
-  static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
-  static constexpr int Q_RFLAG = 26;    // 1 if R != 0
-  // with the viscosity switch: alpha_i after those, Q_ALPHA or Q_ALPHA_AST
-  static constexpr int Q_ALPHA = 20;
-  static constexpr int Q_ALPHA_AST = 27;
-  // with the gradient correction: B_i (9, row major) in the last columns, from qcol_b
+// slots of the hoisted array hq[i][*]
+static constexpr int Q_V = 0;    // 0..2 predicted velocity
+static constexpr int Q_RHO = 3;
+static constexpr int Q_C = 4;
+static constexpr int Q_H = 5;
+static constexpr int Q_A = 6;       // 6..11 sigma / rho^2 (Voigt)
+static constexpr int Q_N = 12;      // 12..14 normal
+static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
+static constexpr int Q_E = 16;
+static constexpr int Q_ZETA = 17;
+static constexpr int Q_GAPV = 18;    // its rate (d_esph_gapv)
+static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng)
+// with the artificial stress only (not communicated: computed for ghosts from Q_A)
+static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
+static constexpr int Q_RFLAG = 26;    // 1 if R != 0
+// with the viscosity switch: alpha_i after those, Q_ALPHA or Q_ALPHA_AST
+static constexpr int Q_ALPHA = 20;
+static constexpr int Q_ALPHA_AST = 27;
+// with the gradient correction: B_i (9, row major) in the last columns, from qcol_b
 
-  enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR };
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR };
 
-  static constexpr double BIG_DT = 1.0e300;
+static constexpr double BIG_DT = 1.0e300;
 
-  /* ----------------------------------------------------------------------
+/* ----------------------------------------------------------------------
    solid rule: the gap of a cross-body pair, the gaps of both particles
    brought to the present with their rates
 ------------------------------------------------------------------------- */
 
-  inline double solid_gap(const double *qi, const double *qj, double dt)
-  {
-    return contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
-  }
+inline double solid_gap(const double *qi, const double *qj, double dt)
+{
+  return contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
+}
 
-  /* ----------------------------------------------------------------------
+/* ----------------------------------------------------------------------
    M^-1 of the correction from its sums (row major), the out-of-plane
    diagonal set to rho; false where M is singular (a particle with too few
    neighbours): then the plain gradient is used
 ------------------------------------------------------------------------- */
 
-  inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &Minv)
-  {
-    Eigen::Matrix3d M;
-    M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
-    for (int d = dim; d < 3; d++) M(d, d) = rho;
-    if (fabs(M.determinant()) <= 1.0e-6 * rho * rho * rho) return false;
-    Minv = M.inverse();
-    return true;
-  }
+inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &Minv)
+{
+  Eigen::Matrix3d M;
+  M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
+  for (int d = dim; d < 3; d++) M(d, d) = rho;
+  if (fabs(M.determinant()) <= 1.0e-6 * rho * rho * rho) return false;
+  Minv = M.inverse();
+  return true;
+}
 
-  /* ----------------------------------------------------------------------
+/* ----------------------------------------------------------------------
+   the correction matrix's pair term: m[3a+b] += (s x[a]) g[b], i.e.
+   m += s x (x) g (row major)
+------------------------------------------------------------------------- */
+
+inline void add_outer(double *m, double s, const double *x, const double *g)
+{
+  for (int a = 0; a < 3; a++) {
+    const double xa = s * x[a];
+    m[3 * a] += xa * g[0];
+    m[3 * a + 1] += xa * g[1];
+    m[3 * a + 2] += xa * g[2];
+  }
+}
+
+/* ----------------------------------------------------------------------
    sums for the normal (eq. 30) and depth of real particle p from boundary
    particle k: dx = x_i - x_j and sgn = +1 if k == i, -1 if k == j, so that
    x_k - x_p = sgn dx
 ------------------------------------------------------------------------- */
 
-  inline void add_normal_sums(double *ap, double w, double sgn, const double *dx, const double *nk)
-  {
-    ap[A_NSUM] += w * nk[0];
-    ap[A_NSUM + 1] += w * nk[1];
-    ap[A_NSUM + 2] += w * nk[2];
-    ap[A_DSUM] += w * (sgn * dx[0] * nk[0] + sgn * dx[1] * nk[1] + sgn * dx[2] * nk[2]);
-    ap[A_WSUM] += w;
-  }
+inline void add_normal_sums(double *ap, double w, double sgn, const double *dx, const double *nk)
+{
+  ap[A_NSUM] += w * nk[0];
+  ap[A_NSUM + 1] += w * nk[1];
+  ap[A_NSUM + 2] += w * nk[2];
+  ap[A_DSUM] += w * (sgn * dx[0] * nk[0] + sgn * dx[1] * nk[1] + sgn * dx[2] * nk[2]);
+  ap[A_WSUM] += w;
+}
 
-  /* ----------------------------------------------------------------------
+/* ----------------------------------------------------------------------
    real particle p takes the gap of its own body's boundary particle k (with
    kernel weight w), extrapolated by dt with its rate to the present
 ------------------------------------------------------------------------- */
 
-  inline void add_gap_sums(double *ap, double w, const double *qk, double dt)
-  {
-    if (qk[Q_GAP] >= GAP_NONE) return;
-    ap[A_GW] += w;
-    ap[A_GG] += w * (qk[Q_GAP] + dt * qk[Q_GAPV]);
-    ap[A_GV] += w * qk[Q_GAPV];
-  }
+inline void add_gap_sums(double *ap, double w, const double *qk, double dt)
+{
+  if (qk[Q_GAP] >= GAP_NONE) return;
+  ap[A_GW] += w;
+  ap[A_GG] += w * (qk[Q_GAP] + dt * qk[Q_GAPV]);
+  ap[A_GV] += w * qk[Q_GAPV];
+}
 
-  /* ----------------------------------------------------------------------
+/* ----------------------------------------------------------------------
    boundary particles i and j of different bodies: gap candidate for both
    (the same number seen from either side), see esph_contact.h
 ------------------------------------------------------------------------- */
 
-  inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double *qj,
-                           const double *dx, double eps)
-  {
-    const double xab[3] = {-dx[0], -dx[1], -dx[2]};
-    const double vab[3] = {qj[Q_V] - qi[Q_V], qj[Q_V + 1] - qi[Q_V + 1], qj[Q_V + 2] - qi[Q_V + 2]};
-    double c, g, gd;
-    if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, c, g, gd)) return;
-    contact_bnd_keep(ai + B_GAP, c, g, gd);
-    if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
-  }
+inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double *qj,
+                         const double *dx, double eps)
+{
+  const double xab[3] = {-dx[0], -dx[1], -dx[2]};
+  const double vab[3] = {qj[Q_V] - qi[Q_V], qj[Q_V + 1] - qi[Q_V + 1], qj[Q_V + 2] - qi[Q_V + 2]};
+  double c, g, gd;
+  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, c, g, gd)) return;
+  contact_bnd_keep(ai + B_GAP, c, g, gd);
+  if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
+}
 
 }    // namespace ESPHSolid
-}    // namespace LAMMPS_NS
 
 #endif
