@@ -105,7 +105,7 @@ void PairESPHSolid::set_defaults()
   contact = CONTACT_SOLID;
   gaptol = 0.05;
   onset = 10;
-  correct_flag = 1;
+  correct_flag = CORRECT_RATE;
   astress_flag = 0;
   astress_eps = 0.0;
   astress_n = 4;
@@ -264,14 +264,17 @@ void PairESPHSolid::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "gradient") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gradient", error);
       if (strcmp(arg[iarg + 1], "plain") == 0)
-        correct_flag = 0;
+        correct_flag = CORRECT_PLAIN;
       else if (strcmp(arg[iarg + 1], "corrected") == 0)
-        correct_flag = 1;
+        correct_flag = CORRECT_RATE;
       else if (strcmp(arg[iarg + 1], "bonet/lok") == 0)
-        correct_flag = 2;
+        correct_flag = CORRECT_BONETLOK;
+      else if (strcmp(arg[iarg + 1], "torquefree") == 0)
+        correct_flag = CORRECT_TORQUEFREE;
       else
         error->all(FLERR, iarg + 2,
-                   "Unknown pair esph/solid gradient {}: expected plain, corrected or bonet/lok",
+                   "Unknown pair esph/solid gradient {}: expected plain, corrected, bonet/lok or "
+                   "torquefree",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "artstress") == 0) {
@@ -595,7 +598,7 @@ void PairESPHSolid::grow_work()
 {
   // the artificial stress keeps R next to the other hoisted quantities (memory locality)
   const int cols0 = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
-  qcol_b = (correct_flag == 2) ? cols0 : -1;
+  qcol_b = (correct_flag >= CORRECT_BONETLOK) ? cols0 : -1;
   const int cols = cols0 + (qcol_b >= 0 ? 9 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
@@ -738,7 +741,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
   for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
 
-  if (correct_flag == 2) correction();
+  if (correct_flag >= CORRECT_BONETLOK) correction();
   if (astress_flag) artificial_stress();
 
   ncontact_pairs = ntouch_pairs = 0;
@@ -821,7 +824,7 @@ void PairESPHSolid::finalize(int eflag)
       // work of the corrected forces), plus viscous heating and heat transfer
       // (in energy/mass units per time, as d_esph_e is stored)
       double work;
-      if (correct_flag == 2) {
+      if (correct_flag >= CORRECT_BONETLOK) {
         const double *B = q + qcol_b;
         work = 0.0;
         for (int k = 0; k < 9; k++) work += B[k] * a[A_G + k];

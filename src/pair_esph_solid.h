@@ -60,6 +60,11 @@ class PairESPHSolid : public Pair {
   static constexpr int NHQ_AST = 7;
 
  protected:
+  // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
+  // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
+  // plain forces less their torque)
+  enum { CORRECT_PLAIN = 0, CORRECT_RATE = 1, CORRECT_BONETLOK = 2, CORRECT_TORQUEFREE = 3 };
+
   // global settings
   double h0;                  // initial smoothing length
   double cut_global;          // neighbour cutoff = support * h0 * hmax
@@ -76,8 +81,7 @@ class PairESPHSolid : public Pair {
   int contact;           // ESPH::ContactRule
   double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
   int onset;             // steps over which a newly touching particle's coupling builds up
-  int correct_flag;      // kernel-gradient correction: 0 plain, 1 velocity gradient (corrected),
-                         // 2 velocity gradient, forces and energy (bonet/lok)
+  int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon
   int astress_n;         // its exponent n in f_ij^n, f_ij = W(r_ij) / W(dp)

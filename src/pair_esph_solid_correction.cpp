@@ -72,21 +72,34 @@ void PairESPHSolid::correction()
     Eigen::Matrix3d Minv;
     Eigen::Matrix3d Bm;
     if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, Minv)) {
-      Bm = q[Q_RHO] * A * Minv.transpose();
-      // the correction stiffens a particle whose kernel support is cut (a free surface,
-      // by up to about 2 normal to it) by the gain kappa, the largest singular value of
-      // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
-      // unstable at 0.3 h / c_L without this, stable at 0.25)
-      const Eigen::Matrix3d K = q[Q_RHO] * Minv;
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-      es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
-      const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
-      if (sqrt_kappa > 1.0) {
-        const double rho = q[Q_RHO];
-        const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
-        const double *v = q + Q_V;
-        const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        dtmin = std::min(dtmin, q[Q_H] / (cl * sqrt_kappa + vmag));
+      if (correct_flag == CORRECT_BONETLOK) {
+        Bm = q[Q_RHO] * A * Minv.transpose();
+        // the correction stiffens a particle whose kernel support is cut (a free surface,
+        // by up to about 2 normal to it) by the gain kappa, the largest singular value of
+        // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
+        // unstable at 0.3 h / c_L without this, stable at 0.25)
+        const Eigen::Matrix3d K = q[Q_RHO] * Minv;
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+        es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
+        const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
+        if (sqrt_kappa > 1.0) {
+          const double rho = q[Q_RHO];
+          const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
+          const double *v = q + Q_V;
+          const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+          dtmin = std::min(dtmin, q[Q_H] / (cl * sqrt_kappa + vmag));
+        }
+      } else {
+        // torquefree: B = S M^-T with S = sym(A M^T), i.e. the plain force's B = A less
+        // its torque (B M^T is symmetric); B = A wherever A and M commute (a uniform bulk,
+        // a flat face along the principal axes), so the free surfaces keep the plain
+        // force and its stability
+        Eigen::Matrix3d M;
+        const double *mi = acc[i] + A_M;
+        M << mi[0], mi[1], mi[2], mi[3], mi[4], mi[5], mi[6], mi[7], mi[8];
+        for (int d = dim; d < 3; d++) M(d, d) = q[Q_RHO];
+        const Eigen::Matrix3d AM = A * M.transpose();
+        Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
       }
     } else {
       Bm = A;

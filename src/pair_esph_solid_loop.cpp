@@ -457,9 +457,9 @@ void PairESPHSolid::pair_loop_select(int extra)
 
 template <int BND, int HVAR, int HEAT> void PairESPHSolid::run_corr()
 {
-  if (correct_flag == 2)
+  if (correct_flag >= CORRECT_BONETLOK)
     pair_loop_extra<BND, HVAR, HEAT, 2>();
-  else if (correct_flag == 1)
+  else if (correct_flag == CORRECT_RATE)
     pair_loop_extra<BND, HVAR, HEAT, 1>();
   else
     pair_loop_extra<BND, HVAR, HEAT, 0>();

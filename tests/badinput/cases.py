@@ -31,7 +31,7 @@ What is accepted (legal input that runs) and why:
     particles and reuses them; velocity set before fix esph/boundary: boundary
     particles take their body's velocity at setup anyway
   * options that change the physics (kernel wendland, linear EOS, heat, hvar, artstress,
-    xsph, gradient plain or bonet/lok, contact paper/off, newton off, yield, shear 0): they run
+    xsph, gradient plain, bonet/lok or torquefree, contact paper/off, newton off, yield, shear 0): they run
   * fix esph/integrate move no with fix move: the documented way to prescribe motion
   * a rigid type (pair_coeff ... rigid yes) left out of the group of fix esph/integrate
 """
@@ -146,6 +146,7 @@ CASES = [
     ("ps_gradient_plain", [K("pair", " gradient plain")], "runs"),
     ("ps_gradient_bonetlok", [K("pair", " gradient bonet/lok")], "runs"),
     ("ps_gradient_bonet", [K("pair", " gradient bonet")], "error:bonet"),
+    ("ps_gradient_torquefree", [K("pair", " gradient torquefree")], "runs"),
     ("ps_artstress_missing", [K("pair", " artstress 0.3 4")], "error:missing argument"),
     ("ps_artstress_negative", [K("pair", " artstress -0.3 4 1e-4")], "error:epsilon must be >= 0"),
     ("ps_artstress_n_zero", [K("pair", " artstress 0.3 0 1e-4")], "error:n must be >= 1"),
