@@ -295,6 +295,53 @@ struct Pt {
 }    // namespace
 
 /* ----------------------------------------------------------------------
+   integer cell grid of cell size `size` anchored at the box origin; each
+   cell holds its points in the order of (atom ID, position), so that sums
+   over a cell's neighbourhood run in the same order on any number of ranks
+   (images of one atom are told apart by position)
+------------------------------------------------------------------------- */
+
+namespace {
+struct CellGrid {
+  const double *lo;
+  double size;
+  std::unordered_map<long long, std::vector<int>> cells;
+
+  CellGrid(const double *lo_, double size_) : lo(lo_), size(size_) {}
+  void cell_of(const double *x, long long *c) const
+  {
+    for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / size) + (1 << 20);
+  }
+  static long long key_of(const long long *c) { return (c[0] << 42) | (c[1] << 21) | c[2]; }
+  // the points of the cell c + (a, b, cc), or nullptr for an empty cell
+  const std::vector<int> *at(const long long *c, int a, int b, int cc) const
+  {
+    const long long cm[3] = {c[0] + a, c[1] + b, c[2] + cc};
+    auto it = cells.find(key_of(cm));
+    return it == cells.end() ? nullptr : &it->second;
+  }
+  // n points, point k at pos(k) with atom ID tag(k)
+  template <class Pos, class Tag> void build(int n, Pos pos, Tag tag)
+  {
+    std::vector<int> order(n);
+    for (int k = 0; k < n; k++) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      if (tag(a) != tag(b)) return tag(a) < tag(b);
+      const double *p = pos(a), *q = pos(b);
+      for (int d = 0; d < 3; d++)
+        if (p[d] != q[d]) return p[d] < q[d];
+      return false;
+    });
+    for (int k : order) {
+      long long c[3];
+      cell_of(pos(k), c);
+      cells[key_of(c)].push_back(k);
+    }
+  }
+};
+}    // namespace
+
+/* ----------------------------------------------------------------------
    the position p and its periodic images within reach of a periodic box face
    (up to 27): returns their number, the positions in img
 ------------------------------------------------------------------------- */
@@ -399,29 +446,16 @@ void FixESPHBoundary::generate()
     }
   }
 
-  // integer cell grid (cell = detection support), anchored at the box origin; each cell
-  // holds its points in the order of atom IDs (images of one atom by position)
-  auto cell_of = [&](const double *x, long long *c) {
-    for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / cut) + (1 << 20);
-  };
-  auto key_of = [](const long long *c) {
-    return (c[0] << 42) | (c[1] << 21) | c[2];
-  };
-  std::vector<int> order(pts.size());
-  for (size_t k = 0; k < pts.size(); k++) order[k] = k;
-  std::sort(order.begin(), order.end(), [&pts](int a, int b) {
-    const Pt &p = pts[a], &q = pts[b];
-    if (p.tag != q.tag) return p.tag < q.tag;
-    for (int d = 0; d < 3; d++)
-      if (p.x[d] != q.x[d]) return p.x[d] < q.x[d];
-    return false;
-  });
-  std::unordered_map<long long, std::vector<int>> grid;
-  for (int k : order) {
-    long long c[3];
-    cell_of(pts[k].x, c);
-    grid[key_of(c)].push_back(k);
-  }
+  // integer cell grid, cell = detection support
+  CellGrid grid(lo, cut);
+  grid.build(
+      pts.size(),
+      [&pts](int k) {
+        return pts[k].x;
+      },
+      [&pts](int k) {
+        return pts[k].tag;
+      });
 
   // detection with h = spacing (support 2 spacings: only the outer layer is off-centre);
   // the normal direction from a kernel with h = smooth spacings: 1 (default) is exact on
@@ -439,16 +473,15 @@ void FixESPHBoundary::generate()
     const double *xi = atom->x[i];
     const int bi = state->body[i];
     long long ci[3];
-    cell_of(xi, ci);
+    grid.cell_of(xi, ci);
     double c[3] = {0.0, 0.0, 0.0}, wsum = 0.0, cn[3] = {0.0, 0.0, 0.0};
     nearest.clear();
     for (int a = -reach; a <= reach; a++)
       for (int b = -reach; b <= reach; b++)
         for (int cc = -reach; cc <= reach; cc++) {
-          const long long cj[3] = {ci[0] + a, ci[1] + b, ci[2] + cc};
-          auto it = grid.find(key_of(cj));
-          if (it == grid.end()) continue;
-          for (int k : it->second) {
+          const std::vector<int> *cell = grid.at(ci, a, b, cc);
+          if (!cell) continue;
+          for (int k : *cell) {
             const Pt &p = pts[k];
             if (p.body != bi) continue;
             const double d[3] = {p.x[0] - xi[0], p.x[1] - xi[1], p.x[2] - xi[2]};
@@ -643,28 +676,16 @@ void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<dou
   rec.insert(rec.end(), got.begin(), got.end());
   const int nrec = rec.size() / S;
 
-  // integer cell grid of cell size rfit; in each cell the records in the order of atom IDs
-  auto cell_of = [&](const double *x, long long *c) {
-    for (int d = 0; d < 3; d++) c[d] = (long long) floor((x[d] - lo[d]) / rfit) + (1 << 20);
-  };
-  auto key_of = [](const long long *c) {
-    return (c[0] << 42) | (c[1] << 21) | c[2];
-  };
-  std::vector<int> order(nrec);
-  for (int k = 0; k < nrec; k++) order[k] = k;
-  std::sort(order.begin(), order.end(), [&rec](int a, int b) {
-    const double *p = &rec[S * a], *q = &rec[S * b];
-    if (p[6] != q[6]) return p[6] < q[6];
-    for (int d = 0; d < 3; d++)
-      if (p[d] != q[d]) return p[d] < q[d];
-    return false;
-  });
-  std::unordered_map<long long, std::vector<int>> grid;
-  for (int k : order) {
-    long long c[3];
-    cell_of(&rec[S * k], c);
-    grid[key_of(c)].push_back(k);
-  }
+  // integer cell grid of cell size rfit
+  CellGrid grid(lo, rfit);
+  grid.build(
+      nrec,
+      [&rec](int k) {
+        return &rec[S * k];
+      },
+      [&rec](int k) {
+        return rec[S * k + 6];
+      });
 
   const double norm = ESPH::kernel_norm(ESPH::CUBIC, 3, 0.5 * rfit);
   const double hinv = 2.0 / rfit;
@@ -673,7 +694,7 @@ void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<dou
     const Eigen::Vector3d n0(bn[3 * k], bn[3 * k + 1], bn[3 * k + 2]);
     const int body = state->body[src[k]];
     long long ck[3];
-    cell_of(xk, ck);
+    grid.cell_of(xk, ck);
     // weighted moments of the offsets d and of q = |d|^2
     double s0 = 0.0, sq = 0.0, sqq = 0.0;
     Eigen::Vector3d s1 = Eigen::Vector3d::Zero(), spq = Eigen::Vector3d::Zero();
@@ -681,10 +702,9 @@ void FixESPHBoundary::fit_normals(const std::vector<double> &bx, std::vector<dou
     for (int a = -1; a <= 1; a++)
       for (int b = -1; b <= 1; b++)
         for (int c = -1; c <= 1; c++) {
-          const long long cm[3] = {ck[0] + a, ck[1] + b, ck[2] + c};
-          auto it = grid.find(key_of(cm));
-          if (it == grid.end()) continue;
-          for (int m : it->second) {
+          const std::vector<int> *cell = grid.at(ck, a, b, c);
+          if (!cell) continue;
+          for (int m : *cell) {
             const double *q = &rec[S * m];
             if ((int) q[7] != body) continue;
             const double agree = n0(0) * q[3] + n0(1) * q[4] + n0(2) * q[5];

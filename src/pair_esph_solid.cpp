@@ -836,8 +836,8 @@ void PairESPHSolid::finalize(int eflag)
       de[i] = (work + a[A_AVHEAT] + a[A_HEAT]) * units.energy;
       // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
       // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
-      Eigen::Matrix3d Minv;
-      if (correct_flag && correction_inverse(a + A_M, rho, dim, Minv))
+      Eigen::Matrix3d M, Minv;
+      if (correct_flag && correction_inverse(a + A_M, rho, dim, M, Minv))
         L = L * Minv;
       else
         L /= rho;

@@ -69,9 +69,8 @@ void PairESPHSolid::correction()
     const double *q = hq[i];
     const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
     double *B = hq[i] + qcol_b;
-    Eigen::Matrix3d Minv;
-    Eigen::Matrix3d Bm;
-    if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, Minv)) {
+    Eigen::Matrix3d M, Minv, Bm;
+    if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, M, Minv)) {
       if (correct_flag == CORRECT_BONETLOK) {
         Bm = q[Q_RHO] * A * Minv.transpose();
         // the correction stiffens a particle whose kernel support is cut (a free surface,
@@ -94,10 +93,6 @@ void PairESPHSolid::correction()
         // its torque (B M^T is symmetric); B = A wherever A and M commute (a uniform bulk,
         // a flat face along the principal axes), so the free surfaces keep the plain
         // force and its stability
-        Eigen::Matrix3d M;
-        const double *mi = acc[i] + A_M;
-        M << mi[0], mi[1], mi[2], mi[3], mi[4], mi[5], mi[6], mi[7], mi[8];
-        for (int d = dim; d < 3; d++) M(d, d) = q[Q_RHO];
         const Eigen::Matrix3d AM = A * M.transpose();
         Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
       }

@@ -103,14 +103,14 @@ inline double solid_gap(const double *qi, const double *qj, double dt)
 }
 
 /* ----------------------------------------------------------------------
-   M^-1 of the correction from its sums (row major), the out-of-plane
-   diagonal set to rho; false where M is singular (a particle with too few
-   neighbours): then the plain gradient is used
+   M of the correction from its sums (row major), the out-of-plane diagonal
+   set to rho, and its inverse; false where M is singular (a particle with
+   too few neighbours): then the plain gradient is used
 ------------------------------------------------------------------------- */
 
-inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &Minv)
+inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &M,
+                               Eigen::Matrix3d &Minv)
 {
-  Eigen::Matrix3d M;
   M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
   for (int d = dim; d < 3; d++) M(d, d) = rho;
   if (fabs(M.determinant()) <= 1.0e-6 * rho * rho * rho) return false;
