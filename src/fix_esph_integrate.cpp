@@ -79,6 +79,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   dt_used = 0.0;
   dtmin = 0.0;
   dtmax = 0.0;
+  staggered = 0;
 
   int iarg = 3;
   while (iarg < narg) {
@@ -99,6 +100,17 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/integrate move", error);
       move = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "scheme") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/integrate scheme", error);
+      if (strcmp(arg[iarg + 1], "predicted") == 0)
+        staggered = 0;
+      else if (strcmp(arg[iarg + 1], "staggered") == 0)
+        staggered = 1;
+      else
+        error->all(FLERR, iarg + 1,
+                   "Fix esph/integrate scheme must be predicted or staggered, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "dtmin") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/integrate dtmin", error);
       dtmin = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -111,6 +123,10 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   }
   if (dtmax > 0.0 && dtmin > dtmax)
     error->all(FLERR, "Fix esph/integrate dtmin {} is larger than dtmax {}", dtmin, dtmax);
+  if (staggered && !move)
+    error->all(FLERR,
+               "Fix esph/integrate scheme staggered needs move yes (its rate pass falls between "
+               "the kick and the drift of the step)");
   if (cfl == 0.0 && (dtmin > 0.0 || dtmax > 0.0))
     error->all(FLERR, "Fix esph/integrate dtmin/dtmax need the cfl keyword");
   // with move no another fix (e.g. fix move) integrates the motion
@@ -218,6 +234,10 @@ void FixESPHIntegrate::setup(int /*vflag*/)
 void FixESPHIntegrate::initial_integrate(int /*vflag*/)
 {
   state->fetch();
+  if (staggered) {
+    initial_integrate_staggered();
+    return;
+  }
   double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
@@ -257,43 +277,33 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         } else {
           for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
         }
-        // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
-        rho[i] += dth * drho[i];
-        e[i] += dth * de[i];
-        h[i] += dth * dh[i];
-        for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
-        const int t = type[i];
-        if (yield[t] > 0.0)
-          epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
-        p[P_RHO] = rho[i] + dth * drho[i];
-        p[P_E] = e[i] + dth * de[i];
-        p[P_H] = h[i] + dth * dh[i];
-        for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
-        // the prediction does not commit plastic strain
-        if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
-        p[P_DIVV] = -drho[i] / rho[i];
-        if (alpha) {
-          alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-          p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+        {
+          // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
+          rho[i] += dth * drho[i];
+          e[i] += dth * de[i];
+          h[i] += dth * dh[i];
+          for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
+          const int t = type[i];
+          if (yield[t] > 0.0)
+            epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
+          p[P_RHO] = rho[i] + dth * drho[i];
+          p[P_E] = e[i] + dth * de[i];
+          p[P_H] = h[i] + dth * dh[i];
+          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
+          // the prediction does not commit plastic strain
+          if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
+          p[P_DIVV] = -drho[i] / rho[i];
+          if (alpha) {
+            alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+            p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+          }
+          continue;
         }
-        continue;
-      }
-      if (move) {
+      } else if (move) {
         // boundary particle: moves with its interpolated velocity, its normal
         // rotates with the spin tensor W (eq. 17): dn/dt = W n = omega x n
         for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
-        const double om[3] = {-bspin[i][2], bspin[i][1], -bspin[i][0]};
-        const double wmag = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
-        const double theta = wmag * dtv;
-        if (theta > 0.0) {
-          const double k[3] = {om[0] / wmag, om[1] / wmag, om[2] / wmag};
-          double *ni = n[i];
-          const double kn = k[0] * ni[0] + k[1] * ni[1] + k[2] * ni[2];
-          const double kxn[3] = {k[1] * ni[2] - k[2] * ni[1], k[2] * ni[0] - k[0] * ni[2],
-                                 k[0] * ni[1] - k[1] * ni[0]};
-          const double ct = cos(theta), st = sin(theta);
-          for (int d = 0; d < 3; d++) ni[d] = ni[d] * ct + kxn[d] * st + k[d] * kn * (1.0 - ct);
-        }
+        rotate_normal(n[i], bspin[i]);
       }
     }
     // not integrated here: the state as it is
@@ -306,6 +316,143 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
     p[P_ALPHA] = alpha ? alpha[i] : 0.0;
   }
   pair->pred_valid = 1;
+}
+
+/* ----------------------------------------------------------------------
+   scheme staggered: kick to v^(n+1/2); the pair style's rate pass at x^n
+   with v^(n+1/2) and the state of step n (stagger_commit() then advances
+   density, h, stress and alpha to n+1); drift to x^(n+1). The force
+   computation of the step sees x^(n+1), v^(n+1/2) and the state of n+1.
+   The internal energy rate of the rate pass is the work rate of the
+   stress forces of step n on v^(n+1/2), that of the force pass the one of
+   the forces of n+1: their mean over the step is the work the kicks do.
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::initial_integrate_staggered()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  int nint = nlocal;
+  if (igroup == atom->firstgroup) nint = atom->nfirst;
+  const double *rmass = state->rmass;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (i < nint && (mask[i] & groupbit) && rmass[i] > 0.0) {
+      const double dtfm = dtf / rmass[i];
+      for (int d = 0; d < 3; d++) v[i][d] += dtfm * f[i][d];
+    }
+    set_pred_from_state(i);
+  }
+  pair->pred_valid = 1;
+  pair->stagger_rates();
+  stagger_commit();
+
+  state->fetch();
+  double **n = state->n;
+  double **xs = pair->xsph_flag ? pair->xsph : nullptr;
+  double **bvel = pair->bvel, **bspin = pair->bspin;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(i < nint && (mask[i] & groupbit))) continue;
+    if (rmass[i] > 0.0) {
+      for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
+      if (xs)
+        for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
+    } else {
+      // boundary particle: the velocity and spin interpolated from v^(n+1/2)
+      for (int d = 0; d < 3; d++) {
+        v[i][d] = bvel[i][d];
+        x[i][d] += dtv * v[i][d];
+      }
+      rotate_normal(n[i], bspin[i]);
+      for (int d = 0; d < 3; d++) pred[i][P_V + d] = v[i][d];
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the prediction of atom i is its state as it is
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::set_pred_from_state(int i)
+{
+  double *p = pred[i];
+  const double *vi = atom->v[i];
+  for (int d = 0; d < 3; d++) p[P_V + d] = vi[d];
+  p[P_RHO] = state->rho[i];
+  p[P_E] = state->e[i];
+  p[P_H] = state->h[i];
+  for (int k = 0; k < 6; k++) p[P_S + k] = state->s[i][k];
+  p[P_DIVV] = (state->rho[i] > 0.0) ? -pair->drho[i] / state->rho[i] : 0.0;
+  p[P_ALPHA] = state->alpha ? state->alpha[i] : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   a boundary particle's normal rotated over one step by its spin tensor W
+   (eq. 17): dn/dt = W n = omega x n
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::rotate_normal(double *ni, const double *spin)
+{
+  const double om[3] = {-spin[2], spin[1], -spin[0]};
+  const double wmag = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
+  const double theta = wmag * dtv;
+  if (theta > 0.0) {
+    const double k[3] = {om[0] / wmag, om[1] / wmag, om[2] / wmag};
+    const double kn = k[0] * ni[0] + k[1] * ni[1] + k[2] * ni[2];
+    const double kxn[3] = {k[1] * ni[2] - k[2] * ni[1], k[2] * ni[0] - k[0] * ni[2],
+                           k[0] * ni[1] - k[1] * ni[0]};
+    const double ct = cos(theta), st = sin(theta);
+    for (int d = 0; d < 3; d++) ni[d] = ni[d] * ct + kxn[d] * st + k[d] * kn * (1.0 - ct);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   staggered scheme, called by the pair style between its two passes: the
+   rates of the first pass (velocity v^(n+1/2) at x^(n+1), state of step n)
+   advance density, smoothing length, stress and the switched viscosity by
+   a whole step; the prediction becomes that state (with the internal energy
+   advanced by the first pass's rate, for the equation of state), which the
+   force pass reads. The internal energy is advanced in final_integrate() by
+   the mean of the two passes' rates.
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::stagger_commit()
+{
+  state->fetch();
+  const int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const double *rmass = state->rmass;
+  double *rho = state->rho, *e = state->e, *h = state->h;
+  double **s = state->s;
+  const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
+  double **ds = pair->ds;
+  const int *type = atom->type;
+  const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
+  double *epsp = state->epsp;
+  double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
+  const double *dalpha = pair->dalpha;
+  const double amin = pair->vswitch_min, amax = pair->alpha;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || rmass[i] == 0.0) continue;
+    double *p = pred[i];
+    rho[i] += dtv * drho[i];
+    h[i] += dtv * dh[i];
+    for (int k = 0; k < 6; k++) s[i][k] += dtv * ds[i][k];
+    const int t = type[i];
+    if (yield[t] > 0.0) epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
+    if (alpha) alpha[i] = advance_alpha(alpha[i], dalpha[i], dtv, amin, amax);
+    p[P_RHO] = rho[i];
+    p[P_H] = h[i];
+    p[P_E] = e[i] + dtv * de[i];
+    for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k];
+    p[P_DIVV] = -drho[i] / rho[i];
+    p[P_ALPHA] = alpha ? alpha[i] : 0.0;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -339,6 +486,13 @@ void FixESPHIntegrate::final_integrate()
         v[i][0] += dtfm * f[i][0];
         v[i][1] += dtfm * f[i][1];
         v[i][2] += dtfm * f[i][2];
+      }
+      if (staggered) {
+        // density, stress, h and alpha are at n+1 already (stagger_commit()); the internal
+        // energy takes the mean rate of the two passes, the rate pass's through its
+        // prediction e + dt de_1 (which migrates with the atom, unlike the pair's rates)
+        e[i] = 0.5 * (e[i] + pred[i][P_E]) + dth * de[i];
+        continue;
       }
       rho[i] += dth * drho[i];
       e[i] += dth * de[i];

@@ -70,6 +70,9 @@ class FixESPHIntegrate : public Fix {
                        P_HASH = 19, P_ALPHA = 20, NPRED = 21;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
+  // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),
+  // then (stagger_commit()) the state is advanced to n+1, then the forces are computed
+  int staggered;
 
   // contact history per pair of bodies (I < J) that have touched, the same on every rank,
   // sorted by bodies (compute esph/contact)
@@ -93,6 +96,10 @@ class FixESPHIntegrate : public Fix {
   class ESPHState *state;
 
   void adapt_dt();
+  void initial_integrate_staggered();
+  void stagger_commit();
+  void set_pred_from_state(int);
+  void rotate_normal(double *, const double *);
   double fingerprint(int);
   void save_normal_used(int, double *);
 };

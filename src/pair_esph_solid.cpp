@@ -720,6 +720,71 @@ void PairESPHSolid::hoist()
 
 void PairESPHSolid::compute(int eflag, int vflag)
 {
+  compute_pass(eflag, vflag);
+}
+
+/* ----------------------------------------------------------------------
+   fix esph/integrate scheme staggered, between its kick and drift: the
+   rates (velocity gradient, continuity, stress and energy rates) of the
+   current positions and the state the integrator has set in its
+   prediction (v^(n+1/2), state of step n). The pass's forces are discarded
+   and what it stored for the next step (normals, gaps, engagement) is
+   undone: the force computation of the step starts from what this pass saw.
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::stagger_rates()
+{
+  stagger_save();
+  compute_pass(0, 0);
+  stagger_restore();
+}
+
+/* ----------------------------------------------------------------------
+   staggered scheme: what the rate pass changes outside its own rates (the
+   forces, with those of other styles already in f; the stored contact
+   geometry of owned atoms; the flags of the force computation)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::stagger_save()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  const int nlocal = atom->nlocal;
+  stagger_f.resize(3 * (size_t) nall);
+  if (nall > 0) memcpy(stagger_f.data(), &atom->f[0][0], sizeof(double) * 3 * nall);
+  stagger_geom.resize(6 * (size_t) nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    double *g = &stagger_geom[6 * (size_t) i];
+    for (int d = 0; d < 3; d++) g[d] = state->n[i][d];
+    g[3] = state->gap[i];
+    g[4] = state->gapv[i];
+    g[5] = state->eng[i];
+  }
+  stagger_depth.assign(state->depth, state->depth + nlocal);
+  stagger_flags[0] = normals_valid;
+  stagger_flags[1] = dt_keep;
+}
+
+void PairESPHSolid::stagger_restore()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  const int nlocal = atom->nlocal;
+  if (nall > 0) memcpy(&atom->f[0][0], stagger_f.data(), sizeof(double) * 3 * nall);
+  for (int i = 0; i < nlocal; i++) {
+    const double *g = &stagger_geom[6 * (size_t) i];
+    for (int d = 0; d < 3; d++) state->n[i][d] = g[d];
+    state->gap[i] = g[3];
+    state->gapv[i] = g[4];
+    state->eng[i] = g[5];
+    state->depth[i] = stagger_depth[i];
+  }
+  normals_valid = stagger_flags[0];
+  dt_keep = stagger_flags[1];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairESPHSolid::compute_pass(int eflag, int vflag)
+{
   ev_init(eflag, vflag);
   grow_work();
   state->fetch();

@@ -28,6 +28,7 @@ PairStyle(esph/solid,PairESPHSolid);
 #include <array>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -39,6 +40,7 @@ class PairESPHSolid : public Pair {
   PairESPHSolid(class LAMMPS *);
   ~PairESPHSolid() override;
   void compute(int, int) override;
+  void stagger_rates();
   void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
@@ -117,12 +119,18 @@ class PairESPHSolid : public Pair {
   int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;
 
-  int pred_valid;        // the integrator's predicted end-of-step state is valid (inside a step,
-                         // and in the setup of a run that continues the previous one)
-  int normals_valid;     // the stored real-particle normals are the ones to use
-  double dt_cfl;         // local CFL time step estimate (min h / (c_L + |v|))
-  double dt_step;        // time step of the step of this force computation (gap forecast)
-  int dt_keep;           // the next computation re-evaluates the last one: keep dt_step
+  int pred_valid;       // the integrator's predicted end-of-step state is valid (inside a step,
+                        // and in the setup of a run that continues the previous one)
+  int normals_valid;    // the stored real-particle normals are the ones to use
+  double dt_cfl;        // local CFL time step estimate (min h / (c_L + |v|))
+  double dt_step;       // time step of the step of this force computation (gap forecast)
+  int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
+  // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
+  std::vector<double> stagger_f, stagger_geom, stagger_depth;
+  int stagger_flags[2];
+  void stagger_save();
+  void stagger_restore();
+  void compute_pass(int, int);
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
   double fcontact;       // sum of transmitted compressive normal pair forces (local)

@@ -6,6 +6,7 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   oblique  two iron blocks, the upper one hitting the lower at (60, -70, 0) m/s (sliding
            contact, the blocks separate near step 100), CFL step (cfl 0.3)
   bonetlok the same with gradient bonet/lok (the CFL step shrinks at the free surfaces)
+  staggered the same with fix esph/integrate scheme staggered and visc 0 1 (no linear term)
   plastic  the same with hardening plasticity, the artificial stress and XSPH, fixed step
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
@@ -91,6 +92,8 @@ scenes = {}
 scenes["oblique"] = block_scene("cfl 0.3") + ({},)
 # the corrected forces: their correction pass and its CFL gain at the free surfaces
 scenes["bonetlok"] = block_scene("cfl 0.3", "gradient bonet/lok") + ({},)
+# the staggered scheme: its rate pass between kick and drift, without linear viscosity
+scenes["staggered"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1") + ({},)
 scenes["plastic"] = block_scene(
     "", "artstress 0.3 4 1e-4 xsph 0.5", "yield 2e8 hardening 1e9",
     "compute epa all property/atom d_esph_epsp\ncompute ep all reduce max c_epa", "c_ep") + ({},)
@@ -229,11 +232,11 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "plastic", "rod", "slabs"):
+for scene in ("oblique", "bonetlok", "staggered", "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene == "bonetlok":
+        if scene in ("bonetlok", "staggered"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene in ("rod", "slabs") and np_ == 2:
             dr = {k: dr[k] for k in ("full", "split3", "restart")}
