@@ -344,6 +344,11 @@ void PairESPHSolid::settings(int narg, char **arg)
                vswitch_min, alpha);
   // the switched coefficient is per-atom state, like the density
   if (vswitch_flag) ESPHState::ensure_visc(lmp);
+  if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "
+                   "approaching pairs interact) then gains energy at every switch (+67 % in "
+                   "the 1D rod impact); use contact solid or a visc alpha > 0");
   cut_global = KERNEL_SUPPORT * h0 * hmax;
 }
 

@@ -283,7 +283,12 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         // solid: no tension across contact, a pair that would pull (or not push) does not
         // interact at all (also not in the strain rate and energy, which would otherwise see
         // work that no force does); paper: only approaching pairs interact
-        if (solid ? (phi == 0.0 || fn >= 0.0) : !touching) continue;
+        // (a pair with no force at all, e.g. stress-free bodies that touch at the start
+        // without artificial viscosity, interacts while it approaches: its strain rate
+        // builds the stress that pushes; without it the bodies would pass through)
+        if (solid ? (phi == 0.0 || fn > 0.0 || (fn == 0.0 && !contact_approach(vn, xn)))
+                  : !touching)
+          continue;
         // the coupling weight scales force, strain rate and heating alike, so that the
         // work of the force is what the internal energy receives
         fn *= phi;

@@ -31,7 +31,8 @@ What is accepted (legal input that runs) and why:
     particles and reuses them; velocity set before fix esph/boundary: boundary
     particles take their body's velocity at setup anyway
   * options that change the physics (kernel wendland, linear EOS, heat, hvar, artstress,
-    xsph, gradient plain, bonet/lok or torquefree, contact paper/off, newton off, yield, shear 0): they run
+    xsph, gradient plain, bonet/lok or torquefree, contact paper/off, newton off, yield, shear 0,
+    fix esph/integrate scheme staggered): they run
   * fix esph/integrate move no with fix move: the documented way to prescribe motion
   * a rigid type (pair_coeff ... rigid yes) left out of the group of fix esph/integrate
 """
@@ -249,6 +250,16 @@ CASES = [
      "error:larger than dtmax"),
     ("fi_move_text", [K("fix_int", " move maybe")], "error:Expected boolean"),
     ("fi_move_no_alone", [K("fix_int", " move no")], "warning:move no"),
+    ("fi_scheme_missing", [K("fix_int", " scheme")], "error:scheme"),
+    ("fi_scheme_bogus", [K("fix_int", " scheme leapfrog")],
+     "error:scheme must be predicted or staggered, got leapfrog"),
+    ("fi_scheme_staggered", [K("fix_int", " scheme staggered")], "runs"),
+    ("fi_scheme_staggered_np2", [K("fix_int", " scheme staggered")], "runs", 2),
+    ("fi_scheme_predicted", [K("fix_int", " scheme predicted")], "same"),
+    ("fi_scheme_staggered_move_no", [K("fix_int", " move no scheme staggered"),
+                                     A("fix_bnd", "fix mv all move linear 0 0 0")],
+     "error:scheme staggered needs move yes"),
+    ("ps_paper_no_alpha", [K("pair", " contact paper visc 0 1 0.1")], "warning:contact paper with visc alpha 0"),
     ("fi_move_no_with_fix_move",
      [K("fix_int", " move no"), A("fix_bnd", "fix mv all move linear 0 0 0")], "runs"),
     ("fi_twice", [A("fix_int", "fix int2 all esph/integrate")], "error:Only one fix esph/integrate"),
