@@ -277,28 +277,26 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         } else {
           for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
         }
-        {
-          // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
-          rho[i] += dth * drho[i];
-          e[i] += dth * de[i];
-          h[i] += dth * dh[i];
-          for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
-          const int t = type[i];
-          if (yield[t] > 0.0)
-            epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
-          p[P_RHO] = rho[i] + dth * drho[i];
-          p[P_E] = e[i] + dth * de[i];
-          p[P_H] = h[i] + dth * dh[i];
-          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
-          // the prediction does not commit plastic strain
-          if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
-          p[P_DIVV] = -drho[i] / rho[i];
-          if (alpha) {
-            alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-            p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-          }
-          continue;
+        // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
+        rho[i] += dth * drho[i];
+        e[i] += dth * de[i];
+        h[i] += dth * dh[i];
+        for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
+        const int t = type[i];
+        if (yield[t] > 0.0)
+          epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
+        p[P_RHO] = rho[i] + dth * drho[i];
+        p[P_E] = e[i] + dth * de[i];
+        p[P_H] = h[i] + dth * dh[i];
+        for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
+        // the prediction does not commit plastic strain
+        if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
+        p[P_DIVV] = -drho[i] / rho[i];
+        if (alpha) {
+          alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+          p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
         }
+        continue;
       } else if (move) {
         // boundary particle: moves with its interpolated velocity, its normal
         // rotates with the spin tensor W (eq. 17): dn/dt = W n = omega x n
@@ -307,13 +305,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
       }
     }
     // not integrated here: the state as it is
-    for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
-    p[P_RHO] = rho[i];
-    p[P_E] = e[i];
-    p[P_H] = h[i];
-    for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k];
-    p[P_DIVV] = (rho[i] > 0.0) ? -drho[i] / rho[i] : 0.0;
-    p[P_ALPHA] = alpha ? alpha[i] : 0.0;
+    set_pred_from_state(i);
   }
   pair->pred_valid = 1;
 }
@@ -386,7 +378,7 @@ void FixESPHIntegrate::set_pred_from_state(int i)
   p[P_H] = state->h[i];
   for (int k = 0; k < 6; k++) p[P_S + k] = state->s[i][k];
   p[P_DIVV] = (state->rho[i] > 0.0) ? -pair->drho[i] / state->rho[i] : 0.0;
-  p[P_ALPHA] = state->alpha ? state->alpha[i] : 0.0;
+  p[P_ALPHA] = (pair->vswitch_flag && state->alpha) ? state->alpha[i] : 0.0;
 }
 
 /* ----------------------------------------------------------------------
