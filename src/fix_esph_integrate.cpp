@@ -278,13 +278,8 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
           for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
         }
         // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
-        rho[i] += dth * drho[i];
-        e[i] += dth * de[i];
-        h[i] += dth * dh[i];
-        for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
+        advance_state(i, dth, 1);
         const int t = type[i];
-        if (yield[t] > 0.0)
-          epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
         p[P_RHO] = rho[i] + dth * drho[i];
         p[P_E] = e[i] + dth * de[i];
         p[P_H] = h[i] + dth * dh[i];
@@ -292,10 +287,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         // the prediction does not commit plastic strain
         if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
         p[P_DIVV] = -drho[i] / rho[i];
-        if (alpha) {
-          alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-          p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-        }
+        if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
         continue;
       } else if (move) {
         // boundary particle: moves with its interpolated velocity, its normal
@@ -365,6 +357,29 @@ void FixESPHIntegrate::initial_integrate_staggered()
 }
 
 /* ----------------------------------------------------------------------
+   advance the SPH state of real particle i by dt with the rates of the last
+   force computation: density, internal energy (if with_e), smoothing
+   length, deviatoric stress with its radial return (committing the plastic
+   strain) and the switched viscosity coefficient
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::advance_state(int i, double dt, int with_e)
+{
+  state->rho[i] += dt * pair->drho[i];
+  if (with_e) state->e[i] += dt * pair->de[i];
+  state->h[i] += dt * pair->dh[i];
+  double *si = state->s[i];
+  for (int k = 0; k < 6; k++) si[k] += dt * pair->ds[i][k];
+  const int t = atom->type[i];
+  if (pair->yield[t] > 0.0)
+    state->epsp[i] +=
+        ESPH::radial_return(si, pair->yield[t], pair->hardening[t], pair->shear[t], state->epsp[i]);
+  if (pair->vswitch_flag)
+    state->alpha[i] =
+        advance_alpha(state->alpha[i], pair->dalpha[i], dt, pair->vswitch_min, pair->alpha);
+}
+
+/* ----------------------------------------------------------------------
    the prediction of atom i is its state as it is
 ------------------------------------------------------------------------- */
 
@@ -418,26 +433,15 @@ void FixESPHIntegrate::stagger_commit()
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   const double *rmass = state->rmass;
-  double *rho = state->rho, *e = state->e, *h = state->h;
+  const double *rho = state->rho, *e = state->e, *h = state->h;
   double **s = state->s;
-  const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
-  double **ds = pair->ds;
-  const int *type = atom->type;
-  const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
-  double *epsp = state->epsp;
-  double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
-  const double *dalpha = pair->dalpha;
-  const double amin = pair->vswitch_min, amax = pair->alpha;
+  const double *drho = pair->drho, *de = pair->de;
+  const double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || rmass[i] == 0.0) continue;
     double *p = pred[i];
-    rho[i] += dtv * drho[i];
-    h[i] += dtv * dh[i];
-    for (int k = 0; k < 6; k++) s[i][k] += dtv * ds[i][k];
-    const int t = type[i];
-    if (yield[t] > 0.0) epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
-    if (alpha) alpha[i] = advance_alpha(alpha[i], dalpha[i], dtv, amin, amax);
+    advance_state(i, dtv, 0);
     p[P_RHO] = rho[i];
     p[P_H] = h[i];
     p[P_E] = e[i] + dtv * de[i];
@@ -459,16 +463,9 @@ void FixESPHIntegrate::final_integrate()
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
 
   const double *rmass = state->rmass;
-  double *rho = state->rho, *e = state->e, *h = state->h;
-  double **s = state->s;
-  const double *drho = pair->drho, *de = pair->de, *dh = pair->dh;
-  double **ds = pair->ds, **bvel = pair->bvel;
-  const int *type = atom->type;
-  const double *yield = pair->yield, *hard = pair->hardening, *shear = pair->shear;
-  double *epsp = state->epsp;
-  double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
-  const double *dalpha = pair->dalpha;
-  const double amin = pair->vswitch_min, amax = pair->alpha;
+  double *e = state->e;
+  const double *de = pair->de;
+  double **bvel = pair->bvel;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -486,14 +483,7 @@ void FixESPHIntegrate::final_integrate()
         e[i] = 0.5 * (e[i] + pred[i][P_E]) + dth * de[i];
         continue;
       }
-      rho[i] += dth * drho[i];
-      e[i] += dth * de[i];
-      h[i] += dth * dh[i];
-      for (int k = 0; k < 6; k++) s[i][k] += dth * ds[i][k];
-      const int t = type[i];
-      if (yield[t] > 0.0)
-        epsp[i] += ESPH::radial_return(s[i], yield[t], hard[t], shear[t], epsp[i]);
-      if (alpha) alpha[i] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+      advance_state(i, dth, 1);
     } else if (move) {
       v[i][0] = bvel[i][0];
       v[i][1] = bvel[i][1];

@@ -99,6 +99,7 @@ class FixESPHIntegrate : public Fix {
   void initial_integrate_staggered();
   void stagger_commit();
   void set_pred_from_state(int);
+  void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
   double fingerprint(int);
   void save_normal_used(int, double *);

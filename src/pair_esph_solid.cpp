@@ -723,11 +723,6 @@ void PairESPHSolid::hoist()
 
 /* ---------------------------------------------------------------------- */
 
-void PairESPHSolid::compute(int eflag, int vflag)
-{
-  compute_pass(eflag, vflag);
-}
-
 /* ----------------------------------------------------------------------
    fix esph/integrate scheme staggered, between its kick and drift: the
    rates (velocity gradient, continuity, stress and energy rates) of the
@@ -740,7 +735,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 void PairESPHSolid::stagger_rates()
 {
   stagger_save();
-  compute_pass(0, 0);
+  compute(0, 0);
   stagger_restore();
 }
 
@@ -756,15 +751,15 @@ void PairESPHSolid::stagger_save()
   const int nlocal = atom->nlocal;
   stagger_f.resize(3 * (size_t) nall);
   if (nall > 0) memcpy(stagger_f.data(), &atom->f[0][0], sizeof(double) * 3 * nall);
-  stagger_geom.resize(6 * (size_t) nlocal);
+  stagger_geom.resize(7 * (size_t) nlocal);
   for (int i = 0; i < nlocal; i++) {
-    double *g = &stagger_geom[6 * (size_t) i];
+    double *g = &stagger_geom[7 * (size_t) i];
     for (int d = 0; d < 3; d++) g[d] = state->n[i][d];
     g[3] = state->gap[i];
     g[4] = state->gapv[i];
     g[5] = state->eng[i];
+    g[6] = state->depth[i];
   }
-  stagger_depth.assign(state->depth, state->depth + nlocal);
   stagger_flags[0] = normals_valid;
   stagger_flags[1] = dt_keep;
 }
@@ -775,12 +770,12 @@ void PairESPHSolid::stagger_restore()
   const int nlocal = atom->nlocal;
   if (nall > 0) memcpy(&atom->f[0][0], stagger_f.data(), sizeof(double) * 3 * nall);
   for (int i = 0; i < nlocal; i++) {
-    const double *g = &stagger_geom[6 * (size_t) i];
+    const double *g = &stagger_geom[7 * (size_t) i];
     for (int d = 0; d < 3; d++) state->n[i][d] = g[d];
     state->gap[i] = g[3];
     state->gapv[i] = g[4];
     state->eng[i] = g[5];
-    state->depth[i] = stagger_depth[i];
+    state->depth[i] = g[6];
   }
   normals_valid = stagger_flags[0];
   dt_keep = stagger_flags[1];
@@ -788,7 +783,7 @@ void PairESPHSolid::stagger_restore()
 
 /* ---------------------------------------------------------------------- */
 
-void PairESPHSolid::compute_pass(int eflag, int vflag)
+void PairESPHSolid::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   grow_work();

@@ -126,11 +126,10 @@ class PairESPHSolid : public Pair {
   double dt_step;       // time step of the step of this force computation (gap forecast)
   int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
   // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
-  std::vector<double> stagger_f, stagger_geom, stagger_depth;
+  std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth
   int stagger_flags[2];
   void stagger_save();
   void stagger_restore();
-  void compute_pass(int, int);
   int ncontact_pairs;    // cross-body pairs interacting in the last compute (local)
   int ntouch_pairs;      // cross-body pairs whose surfaces touch (gap <= tolerance)
   double fcontact;       // sum of transmitted compressive normal pair forces (local)
