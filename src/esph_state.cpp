@@ -76,10 +76,18 @@ void ESPHState::ensure_visc(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::ensure_recon(LAMMPS *lmp)
+{
+  if (internal_fix_exists(lmp, FIX_ID_RECON, "esph_drec")) return;
+  lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_drec 12", FIX_ID_RECON));
+}
+
+/* ---------------------------------------------------------------------- */
+
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
     gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
-    lmp(_lmp), iepsp(-1), ialpha(-1)
+    drec(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -122,4 +130,6 @@ void ESPHState::fetch()
   epsp = (iepsp >= 0) ? atom->dvector[iepsp] : nullptr;
   ialpha = atom->find_custom("esph_alpha", flag, cols);
   alpha = (ialpha >= 0) ? atom->dvector[ialpha] : nullptr;
+  idrec = atom->find_custom("esph_drec", flag, cols);
+  drec = (idrec >= 0) ? atom->darray[idrec] : nullptr;
 }

@@ -30,6 +30,9 @@
 //   d_esph_epsp    equivalent plastic strain (fix ESPH_PLASTIC, only with plasticity)
 //   d_esph_alpha   coefficient of the switched artificial viscosity (fix ESPH_VISC, only with
 //                  pair_style esph/solid visc/switch; 0 = unset)
+//   d2_esph_drec[12] strain rates of the reconstructed viscosity (fix ESPH_RECON, only with
+//                  pair_style esph/solid visc/recon): 0..5 D = sym(L) of the last force
+//                  computation (Voigt), 6..11 the D that computation used
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -47,6 +50,7 @@ class ESPHState {
   static constexpr const char *FIX_ID_NORMAL = "ESPH_NORMAL";
   static constexpr const char *FIX_ID_PLASTIC = "ESPH_PLASTIC";
   static constexpr const char *FIX_ID_VISC = "ESPH_VISC";
+  static constexpr const char *FIX_ID_RECON = "ESPH_RECON";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
@@ -56,6 +60,9 @@ class ESPHState {
   // create the viscosity-switch fix (d_esph_alpha) if it does not exist yet: only scenes
   // with visc/switch carry it
   static void ensure_visc(LAMMPS *lmp);
+  // create the reconstruction fix (d2_esph_drec) if it does not exist yet: only scenes
+  // with visc/recon carry it
+  static void ensure_recon(LAMMPS *lmp);
 
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
@@ -64,11 +71,12 @@ class ESPHState {
   double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
   double *epsp;     // equivalent plastic strain, nullptr without plasticity
   double *alpha;    // switched viscosity coefficient, nullptr without visc/switch
+  double **drec;    // strain rates of visc/recon (12 per atom), nullptr without it
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec;
 };
 
 }    // namespace LAMMPS_NS

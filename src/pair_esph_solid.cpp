@@ -56,14 +56,14 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), qcol_b(-1), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0),
-    atom_contact(nullptr), state(nullptr), fix_int(nullptr)
+    hq_cols(NHQ), qcol_b(-1), qcol_d(-1), recon_keep(0), nboundary(0), atom_contact_flag(0),
+    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
   one_coeff = 0;
   manybody_flag = 0;
-  comm_forward = 20;    // 12 + 6 contact geometry + 2 heat
+  comm_forward = 27;    // 12 + 6 contact geometry + 2 heat + 1 switch + 6 reconstruction
   comm_reverse = NACC;
 
   h0 = 0.0;
@@ -98,6 +98,7 @@ void PairESPHSolid::set_defaults()
   vswitch_flag = 0;
   vswitch_min = 0.1;
   vswitch_l = 0.2;
+  recon_flag = RECON_OFF;
   heat_flag = 0;
   g1 = g2 = 0.0;
   hvar_flag = 0;
@@ -231,6 +232,20 @@ void PairESPHSolid::settings(int narg, char **arg)
                    arg[iarg + 2]);
       vswitch_flag = 1;
       iarg += 3;
+    } else if (strcmp(arg[iarg], "visc/recon") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/recon", error);
+      if (strcmp(arg[iarg + 1], "vanleer") == 0)
+        recon_flag = RECON_VANLEER;
+      else if (strcmp(arg[iarg + 1], "minmod") == 0)
+        recon_flag = RECON_MINMOD;
+      else if (strcmp(arg[iarg + 1], "off") == 0)
+        recon_flag = RECON_OFF;
+      else
+        error->all(FLERR, iarg + 1,
+                   "Pair esph/solid visc/recon must be vanleer, minmod or off, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "heat") == 0) {
       if (iarg + 2 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid heat", error);
       g1 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -344,6 +359,13 @@ void PairESPHSolid::settings(int narg, char **arg)
                vswitch_min, alpha);
   // the switched coefficient is per-atom state, like the density
   if (vswitch_flag) ESPHState::ensure_visc(lmp);
+  // so are the strain rates the reconstruction uses (restart files, atom migration)
+  if (recon_flag) ESPHState::ensure_recon(lmp);
+  if (recon_flag && alpha == 0.0 && beta == 0.0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid visc/recon with visc alpha and beta 0 has no effect (there "
+                   "is no viscosity to reconstruct): set visc alpha or beta > 0, or drop "
+                   "visc/recon");
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "
@@ -559,6 +581,7 @@ void PairESPHSolid::setup()
   pred_valid = fix_int->resume_check();
   normals_valid = pred_valid;
   dt_keep = pred_valid;
+  recon_keep = pred_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -587,6 +610,11 @@ void PairESPHSolid::setup()
     for (int i = 0; i < nlocal; i++)
       if (state->alpha[i] == 0.0) state->alpha[i] = alpha;
   }
+  if (recon_flag && !state->drec)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid visc/recon: the fix {} of d2_esph_drec is gone (it must not be "
+               "deleted)",
+               ESPHState::FIX_ID_RECON);
 
   grow_work();
   // rates start at zero until the first compute
@@ -604,7 +632,9 @@ void PairESPHSolid::grow_work()
   // the artificial stress keeps R next to the other hoisted quantities (memory locality)
   const int cols0 = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
   qcol_b = (correct_flag >= CORRECT_BONETLOK) ? cols0 : -1;
-  const int cols = cols0 + (qcol_b >= 0 ? 9 : 0);
+  const int cols1 = cols0 + (qcol_b >= 0 ? 9 : 0);
+  qcol_d = recon_flag ? cols1 : -1;
+  const int cols = cols1 + (qcol_d >= 0 ? 6 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
     hq_cols = cols;
@@ -656,6 +686,13 @@ void PairESPHSolid::hoist()
   // the switched viscosity coefficient: its column, and the predicted or current alpha_i
   const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   const double *alpha_now = vswitch_flag ? state->alpha : nullptr;
+  // visc/recon: the strain rates of the last computation become the ones this one uses,
+  // unless it re-evaluates the last computation (a continued run)
+  double **drec = recon_flag ? state->drec : nullptr;
+  if (drec && !recon_keep)
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 6; k++) drec[i][6 + k] = drec[i][k];
+  recon_keep = 0;
 
   double dtmin = BIG_DT;
   for (int i = 0; i < nlocal; i++) {
@@ -672,6 +709,8 @@ void PairESPHSolid::hoist()
     q[Q_GAP] = state->gap[i];
     q[Q_GAPV] = state->gapv[i];
     q[Q_ENG] = state->eng[i];
+    if (drec)
+      for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
     if (rmass[i] > 0.0) {
       const int itype = type[i];
       const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
@@ -796,7 +835,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // forward communication of what neighbours need, in one message
   comm_bnd = bnd;
-  nforward = 12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0);
+  nforward =
+      12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;
@@ -907,6 +947,16 @@ void PairESPHSolid::finalize(int eflag)
       else
         L /= rho;
       jaumann_rate(L, sp, shear[type[i]], ds[i]);
+      // visc/recon: the strain rate D = sym(L) for the next computation's reconstruction
+      if (recon_flag) {
+        double *d = state->drec[i];
+        d[0] = L(0, 0);
+        d[1] = L(1, 1);
+        d[2] = L(2, 2);
+        d[3] = 0.5 * (L(0, 1) + L(1, 0));
+        d[4] = 0.5 * (L(0, 2) + L(2, 0));
+        d[5] = 0.5 * (L(1, 2) + L(2, 1));
+      }
       if (xsph_flag)
         for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
       // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
@@ -930,6 +980,8 @@ void PairESPHSolid::finalize(int eflag)
       drho[i] = de[i] = dh[i] = 0.0;
       for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
       if (vswitch_flag) dalpha[i] = 0.0;
+      if (recon_flag)
+        for (int k = 0; k < 6; k++) state->drec[i][k] = 0.0;
       if (a[B_WSUM] > 0.0) {
         // interpolation from the real particles p of the body: with the Shepard means
         // vbar, xi = xbar - x_k, and the corrected velocity gradient
@@ -1016,6 +1068,8 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       buf[m++] = q[Q_ZETA];
     }
     if (vswitch_flag) buf[m++] = q[qal];
+    if (recon_flag)
+      for (int k = 0; k < 6; k++) buf[m++] = q[qcol_d + k];
   }
   return m;
 }
@@ -1063,6 +1117,8 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       q[Q_ZETA] = buf[m++];
     }
     if (vswitch_flag) q[qal] = buf[m++];
+    if (recon_flag)
+      for (int k = 0; k < 6; k++) q[qcol_d + k] = buf[m++];
   }
 }
 

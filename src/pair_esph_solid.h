@@ -66,6 +66,8 @@ class PairESPHSolid : public Pair {
   // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
   // plain forces less their torque)
   enum { CORRECT_PLAIN = 0, CORRECT_RATE = 1, CORRECT_BONETLOK = 2, CORRECT_TORQUEFREE = 3 };
+  // the visc/recon keyword's slope limiter of the reconstructed viscosity velocities
+  enum { RECON_OFF = 0, RECON_VANLEER = 1, RECON_MINMOD = 2 };
 
   // global settings
   double h0;                  // initial smoothing length
@@ -76,6 +78,7 @@ class PairESPHSolid : public Pair {
   int vswitch_flag;           // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
   double vswitch_min;         // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;           // its decay constant l: tau_i = h_i / (l c_i)
+  int recon_flag;             // visc/recon: RECON_OFF, RECON_VANLEER, RECON_MINMOD
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;         // variable smoothing length (eq. 24)
@@ -112,9 +115,13 @@ class PairESPHSolid : public Pair {
   double *dalpha;                  // rate of d_esph_alpha, only with visc/switch
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
   double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
-  int hq_cols;    // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 1 with the
-                  // viscosity switch (its alpha_i), + 9 with the gradient correction (B_i)
-  int qcol_b;     // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
+  int hq_cols;       // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 1 with the
+                     // viscosity switch (its alpha_i), + 9 with the gradient correction (B_i),
+                     // + 6 with visc/recon (D_i)
+  int qcol_b;        // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
+  int qcol_d;        // visc/recon: first column of the strain rate D_i (Voigt) it uses, or -1
+  int recon_keep;    // visc/recon: the next computation re-evaluates the last one: keep
+                     // the strain rates that one used
   int comm_stage;
   int comm_bnd;    // forward communication carries the contact geometry
   int nforward, nreverse;

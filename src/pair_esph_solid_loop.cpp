@@ -72,6 +72,9 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   constexpr int QAL = AST ? Q_ALPHA_AST : Q_ALPHA;
   // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
   const double beta_ratio = (VSW && alpha > 0.0) ? beta / alpha : 0.0;
+  // visc/recon: the limiter, and the column of the strain rates it reconstructs with
+  const int recon = recon_flag;
+  const int qd = qcol_d;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -218,7 +221,11 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       }
 
       // Monaghan-Gingold artificial viscosity (eqs. 4-7)
-      const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
+      double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
+      // visc/recon: the velocities reconstructed to the pair's midpoint with the limited
+      // strain rates of both particles, v_i - D_i x_ij / 2 and v_j + D_j x_ij / 2, so that
+      // a linear velocity field has no viscosity (only approaching pairs, same body)
+      if (recon && vr < 0.0 && !cross) vr = recon_vr(vr, qi + qd, qj + qd, dx, recon);
       double pi_ij = 0.0;
       if (vr < 0.0) {
         const double mu = hij * vr / (rsq + eps * hij * hij);

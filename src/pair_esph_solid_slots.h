@@ -22,6 +22,7 @@
 #include "esph_contact.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 namespace ESPHSolid {
@@ -175,6 +176,41 @@ inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double 
   if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, c, g, gd)) return;
   contact_bnd_keep(ai + B_GAP, c, g, gd);
   if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
+}
+
+/* ----------------------------------------------------------------------
+   visc/recon: v_ij . x_ij of the velocities reconstructed to the midpoint
+   of the pair (Frontiere, Raskin and Owen 2017; Rosswog 2020):
+     v_ij* = v_ij - phi (D_i + D_j) x_ij / 2,
+   with the strain rates D (Voigt) of the last force computation and the
+   slope limiter phi of the rates along the pair a = x_ij . D x_ij, which
+   is symmetric in i and j (the pair's result does not depend on which of
+   the two the neighbour list holds): van Leer 4 a_i a_j / (a_i + a_j)^2,
+   minmod min(a_i, a_j) / max(a_i, a_j); 0 where the rates have opposite
+   signs (an extremum or a front). A linear field (a_i = a_j) has phi = 1
+   and v_ij* . x_ij = 0.
+------------------------------------------------------------------------- */
+
+inline double recon_slope(const double *d, const double *x)
+{
+  return d[0] * x[0] * x[0] + d[1] * x[1] * x[1] + d[2] * x[2] * x[2] +
+      2.0 * (d[3] * x[0] * x[1] + d[4] * x[0] * x[2] + d[5] * x[1] * x[2]);
+}
+
+inline double recon_vr(double vr, const double *di, const double *dj, const double *dx, int limiter)
+{
+  const double ai = recon_slope(di, dx);
+  const double aj = recon_slope(dj, dx);
+  const double p = ai * aj;
+  if (p <= 0.0) return vr;
+  double phi;
+  if (limiter == 1) {
+    const double s = ai + aj;
+    phi = 4.0 * p / (s * s);
+  } else {
+    phi = std::min(fabs(ai), fabs(aj)) / std::max(fabs(ai), fabs(aj));
+  }
+  return vr - 0.5 * phi * (ai + aj);
 }
 
 }    // namespace ESPHSolid

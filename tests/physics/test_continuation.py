@@ -7,6 +7,7 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
            contact, the blocks separate near step 100), CFL step (cfl 0.3)
   bonetlok the same with gradient bonet/lok (the CFL step shrinks at the free surfaces)
   staggered the same with fix esph/integrate scheme staggered and visc 0 1 (no linear term)
+  recon    the same with pair_style esph/solid visc/recon vanleer (strain rates carried over)
   plastic  the same with hardening plasticity, the artificial stress and XSPH, fixed step
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
@@ -94,6 +95,8 @@ scenes["oblique"] = block_scene("cfl 0.3") + ({},)
 scenes["bonetlok"] = block_scene("cfl 0.3", "gradient bonet/lok") + ({},)
 # the staggered scheme: its rate pass between kick and drift, without linear viscosity
 scenes["staggered"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1") + ({},)
+# the reconstructed viscosity: strain rates carried from one computation to the next
+scenes["recon"] = block_scene("cfl 0.3", "visc/recon vanleer") + ({},)
 scenes["plastic"] = block_scene(
     "", "artstress 0.3 4 1e-4 xsph 0.5", "yield 2e8 hardening 1e9",
     "compute epa all property/atom d_esph_epsp\ncompute ep all reduce max c_epa", "c_ep") + ({},)
@@ -232,11 +235,11 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "staggered", "plastic", "rod", "slabs"):
+for scene in ("oblique", "bonetlok", "staggered", "recon", "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene in ("bonetlok", "staggered"):
+        if scene in ("bonetlok", "staggered", "recon"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene in ("rod", "slabs") and np_ == 2:
             dr = {k: dr[k] for k in ("full", "split3", "restart")}
