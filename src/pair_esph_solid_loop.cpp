@@ -68,12 +68,14 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   constexpr int XSPH = EXTRA & EXTRA_XSPH;
   constexpr int FRIC = BND && (EXTRA & EXTRA_FRICTION);
   constexpr int RIG = BND && (EXTRA & EXTRA_RIGID);
-  constexpr int VSW = EXTRA & EXTRA_VSWITCH;
+  // the switched (visc/switch) or reconstructed (visc/recon) viscosity, either or both
+  constexpr int VEXT = EXTRA & EXTRA_VISC;
+  const int vswitch = VEXT && vswitch_flag;
   constexpr int QAL = AST ? Q_ALPHA_AST : Q_ALPHA;
   // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
-  const double beta_ratio = (VSW && alpha > 0.0) ? beta / alpha : 0.0;
+  const double beta_ratio = (vswitch && alpha > 0.0) ? beta / alpha : 0.0;
   // visc/recon: the limiter, and the column of the strain rates it reconstructs with
-  const int recon = recon_flag;
+  const int recon = VEXT && recon_flag;
   const int qd = qcol_d;
   if (AST) {
     double wdp, dwdp;
@@ -221,16 +223,17 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
       }
 
       // Monaghan-Gingold artificial viscosity (eqs. 4-7)
-      double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
-      // visc/recon: the velocities reconstructed to the pair's midpoint with the limited
-      // strain rates of both particles, v_i - D_i x_ij / 2 and v_j + D_j x_ij / 2, so that
-      // a linear velocity field has no viscosity (only approaching pairs, same body)
-      if (recon && vr < 0.0 && !cross) vr = recon_vr(vr, qi + qd, qj + qd, dx, recon);
+      const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
       double pi_ij = 0.0;
       if (vr < 0.0) {
-        const double mu = hij * vr / (rsq + eps * hij * hij);
+        // visc/recon: the velocities reconstructed to the pair's midpoint with the limited
+        // strain rates of both particles, v_i - D_i x_ij / 2 and v_j + D_j x_ij / 2, so that
+        // a linear velocity field has no viscosity (approaching pairs of one body only)
+        double vrv = vr;
+        if (VEXT && recon && !cross) vrv = std::min(recon_vr(vr, qi + qd, qj + qd, dx, recon), 0.0);
+        const double mu = hij * vrv / (rsq + eps * hij * hij);
         double al = alpha, be = beta;
-        if (VSW) {
+        if (vswitch) {
           // Morris-Monaghan switch: the mean of the two particles' alpha
           al = 0.5 * (qa[QAL] + qb[QAL]);
           be = beta_ratio * al;
@@ -414,7 +417,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
 template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
 {
   const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0) |
-      (vswitch_flag ? EXTRA_VSWITCH : 0);
+      ((vswitch_flag || recon_flag) ? EXTRA_VISC : 0);
   // friction and rigid bodies act between bodies only: with boundary particles
   if constexpr (BND) {
     const int fric = (friction > 0.0 && contact != CONTACT_OFF);
@@ -451,18 +454,17 @@ void PairESPHSolid::pair_loop_select(int extra)
     case EXTRA_ASTRESS | EXTRA_XSPH:
       pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>();
       break;
-    case EXTRA_VSWITCH:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH>();
+    case EXTRA_VISC:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC>();
       break;
-    case EXTRA_VSWITCH | EXTRA_ASTRESS:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS>();
+    case EXTRA_VISC | EXTRA_ASTRESS:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS>();
       break;
-    case EXTRA_VSWITCH | EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_XSPH>();
+    case EXTRA_VISC | EXTRA_XSPH:
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_XSPH>();
       break;
     default:
-      pair_loop<BND, HVAR, HEAT, CORR,
-                CONTACT_EXTRA | EXTRA_VSWITCH | EXTRA_ASTRESS | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS | EXTRA_XSPH>();
       break;
   }
 }

@@ -178,6 +178,13 @@ CASES = [
     ("ps_vswitch_text", [K("pair", " visc/switch low 0.2")], "error:Expected floating point"),
     ("ps_vswitch_above", [K("pair", " visc/switch 2 0.2")], "error:must not exceed the visc alpha"),
     ("ps_vswitch_off", [K("pair", " visc/switch off")], "same"),
+    ("ps_recon_missing", [K("pair", " visc/recon")], "error:missing argument"),
+    ("ps_recon_bogus", [K("pair", " visc/recon superbee")], "error:must be vanleer, minmod or off, got superbee"),
+    ("ps_recon_off", [K("pair", " visc/recon off")], "same"),
+    ("ps_recon_vanleer", [K("pair", " visc/recon vanleer")], "runs"),
+    ("ps_recon_minmod_np2", [K("pair", " visc/recon minmod")], "runs", 2),
+    ("ps_recon_no_visc", [K("pair", " visc 0 0 0.1 visc/recon vanleer")], "warning:visc/recon with visc alpha and beta 0"),
+    ("ps_recon_fix_first", [K("pair", " visc/recon vanleer"), M("fix_int", "pair")], "runs"),
     # ---------------- pair_coeff ----------------
     ("pc_missing", [D("coeff")], "error:coeffs are not set"),
     ("pc_one_type_only", [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 " + MG)],
