@@ -75,7 +75,7 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
   // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
   const double beta_ratio = (vswitch && alpha > 0.0) ? beta / alpha : 0.0;
   // visc/recon: the limiter, and the column of the strain rates it reconstructs with
-  const int recon = VEXT && recon_flag;
+  const int recon = VEXT ? recon_flag : 0;
   const int qd = qcol_d;
   if (AST) {
     double wdp, dwdp;

@@ -204,7 +204,7 @@ inline double recon_vr(double vr, const double *di, const double *dj, const doub
   const double p = ai * aj;
   if (p <= 0.0) return vr;
   double phi;
-  if (limiter == 1) {
+  if (limiter == 1) {    // RECON_VANLEER
     const double s = ai + aj;
     phi = 4.0 * p / (s * s);
   } else {
