@@ -21,13 +21,25 @@
 #include "compute_esph_contact.h"
 #include "fix_esph_boundary.h"
 #include "fix_esph_integrate.h"
+#include "fix_esph_integrate_omp.h"
 #include "pair_esph_solid.h"
+#include "pair_esph_solid_omp.h"
 
 using namespace LAMMPS_NS;
 
 static Pair *pair_esph_solid_creator(LAMMPS *lmp)
 {
   return new PairESPHSolid(lmp);
+}
+
+static Pair *pair_esph_solid_omp_creator(LAMMPS *lmp)
+{
+  return new PairESPHSolidOMP(lmp);
+}
+
+static Fix *fix_esph_integrate_omp_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixESPHIntegrateOMP(lmp, argc, argv);
 }
 
 static Fix *fix_esph_integrate_creator(LAMMPS *lmp, int argc, char **argv)
@@ -65,10 +77,20 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_esph_solid_creator;
   (*register_plugin)(&plugin, lmp);
 
+  plugin.name = "esph/solid/omp";
+  plugin.info = "ESPH elastic solid SPH pair style with contact, OpenMP threads v0.1";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_esph_solid_omp_creator;
+  (*register_plugin)(&plugin, lmp);
+
   plugin.style = "fix";
   plugin.name = "esph/integrate";
   plugin.info = "ESPH time integration v0.1";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_esph_integrate_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "esph/integrate/omp";
+  plugin.info = "ESPH time integration, OpenMP threads v0.1";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_esph_integrate_omp_creator;
   (*register_plugin)(&plugin, lmp);
 
   plugin.name = "esph/boundary";

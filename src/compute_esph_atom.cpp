@@ -85,7 +85,7 @@ ComputeESPHAtom::~ComputeESPHAtom()
 
 void ComputeESPHAtom::init()
 {
-  pair = dynamic_cast<PairESPHSolid *>(force->pair_match("esph/solid", 1));
+  pair = dynamic_cast<PairESPHSolid *>(force->pair_match("^esph/solid", 0));
   if (!pair)
     error->all(FLERR, Error::NOLASTLINE,
                "Compute esph/atom requires pair style esph/solid (its equation of state, "

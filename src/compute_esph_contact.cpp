@@ -52,7 +52,7 @@ ComputeESPHContact::~ComputeESPHContact()
 
 void ComputeESPHContact::init()
 {
-  auto fixes = modify->get_fix_by_style("^esph/integrate$");
+  auto fixes = modify->get_fix_by_style("^esph/integrate");
   if (fixes.empty())
     error->all(FLERR, Error::NOLASTLINE, "Compute esph/contact requires fix esph/integrate");
   fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);

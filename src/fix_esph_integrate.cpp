@@ -26,6 +26,7 @@
 #include "error.h"
 #include "esph_state.h"
 #include "esph_strength.h"
+#include "esph_threads.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -56,7 +57,7 @@ static constexpr double RESTART_LAYOUT = 2026120202.0;
 /* ---------------------------------------------------------------------- */
 
 FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), pred(nullptr), pair(nullptr), state(nullptr)
+    Fix(lmp, narg, arg), pred(nullptr), nthreads(1), pair(nullptr), state(nullptr)
 {
   time_integrate = 1;
   restart_global = 1;
@@ -177,7 +178,7 @@ void FixESPHIntegrate::init()
   pair = dynamic_cast<PairESPHSolid *>(force->pair_match("^esph/solid", 0));
   if (!pair)
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/integrate requires pair style esph/solid");
-  if (modify->get_fix_by_style("^esph/integrate$").size() > 1)
+  if (modify->get_fix_by_style("^esph/integrate").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
   // a restart file written during a run with a fixed time step holds the elapsed time at
   // the start of that run, and Integrate::init() counts the time from the current step:
@@ -260,45 +261,47 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const double *dalpha = pair->dalpha;
   const double amin = pair->vswitch_min, amax = pair->alpha;
 
-  for (int i = 0; i < nlocal; i++) {
-    double *p = pred[i];
-    if (i < nint && (mask[i] & groupbit)) {
-      if (rmass[i] > 0.0) {
-        if (move) {
-          const double dtfm = dtf / rmass[i];
-          for (int d = 0; d < 3; d++) {
-            v[i][d] += dtfm * f[i][d];
-            x[i][d] += dtv * v[i][d];
-            p[P_V + d] = v[i][d] + dtfm * f[i][d];
+  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      double *p = pred[i];
+      if (i < nint && (mask[i] & groupbit)) {
+        if (rmass[i] > 0.0) {
+          if (move) {
+            const double dtfm = dtf / rmass[i];
+            for (int d = 0; d < 3; d++) {
+              v[i][d] += dtfm * f[i][d];
+              x[i][d] += dtv * v[i][d];
+              p[P_V + d] = v[i][d] + dtfm * f[i][d];
+            }
+            // XSPH: the particle drifts with its velocity smoothed over its body
+            if (xs)
+              for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
+          } else {
+            for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
           }
-          // XSPH: the particle drifts with its velocity smoothed over its body
-          if (xs)
-            for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
-        } else {
-          for (int d = 0; d < 3; d++) p[P_V + d] = v[i][d];
+          // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
+          advance_state(i, dth, 1);
+          const int t = type[i];
+          p[P_RHO] = rho[i] + dth * drho[i];
+          p[P_E] = e[i] + dth * de[i];
+          p[P_H] = h[i] + dth * dh[i];
+          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
+          // the prediction does not commit plastic strain
+          if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
+          p[P_DIVV] = -drho[i] / rho[i];
+          if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+          continue;
+        } else if (move) {
+          // boundary particle: moves with its interpolated velocity, its normal
+          // rotates with the spin tensor W (eq. 17): dn/dt = W n = omega x n
+          for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
+          rotate_normal(n[i], bspin[i]);
         }
-        // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
-        advance_state(i, dth, 1);
-        const int t = type[i];
-        p[P_RHO] = rho[i] + dth * drho[i];
-        p[P_E] = e[i] + dth * de[i];
-        p[P_H] = h[i] + dth * dh[i];
-        for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
-        // the prediction does not commit plastic strain
-        if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
-        p[P_DIVV] = -drho[i] / rho[i];
-        if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
-        continue;
-      } else if (move) {
-        // boundary particle: moves with its interpolated velocity, its normal
-        // rotates with the spin tensor W (eq. 17): dn/dt = W n = omega x n
-        for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
-        rotate_normal(n[i], bspin[i]);
       }
+      // not integrated here: the state as it is
+      set_pred_from_state(i);
     }
-    // not integrated here: the state as it is
-    set_pred_from_state(i);
-  }
+  });
   pair->pred_valid = 1;
 }
 
@@ -467,29 +470,31 @@ void FixESPHIntegrate::final_integrate()
   const double *de = pair->de;
   double **bvel = pair->bvel;
 
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    if (rmass[i] > 0.0) {
-      if (move) {
-        const double dtfm = dtf / rmass[i];
-        v[i][0] += dtfm * f[i][0];
-        v[i][1] += dtfm * f[i][1];
-        v[i][2] += dtfm * f[i][2];
+  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      if (rmass[i] > 0.0) {
+        if (move) {
+          const double dtfm = dtf / rmass[i];
+          v[i][0] += dtfm * f[i][0];
+          v[i][1] += dtfm * f[i][1];
+          v[i][2] += dtfm * f[i][2];
+        }
+        if (staggered) {
+          // density, stress, h and alpha are at n+1 already (stagger_commit()); the internal
+          // energy takes the mean rate of the two passes, the rate pass's through its
+          // prediction e + dt de_1 (which migrates with the atom, unlike the pair's rates)
+          e[i] = 0.5 * (e[i] + pred[i][P_E]) + dth * de[i];
+          continue;
+        }
+        advance_state(i, dth, 1);
+      } else if (move) {
+        v[i][0] = bvel[i][0];
+        v[i][1] = bvel[i][1];
+        v[i][2] = bvel[i][2];
       }
-      if (staggered) {
-        // density, stress, h and alpha are at n+1 already (stagger_commit()); the internal
-        // energy takes the mean rate of the two passes, the rate pass's through its
-        // prediction e + dt de_1 (which migrates with the atom, unlike the pair's rates)
-        e[i] = 0.5 * (e[i] + pred[i][P_E]) + dth * de[i];
-        continue;
-      }
-      advance_state(i, dth, 1);
-    } else if (move) {
-      v[i][0] = bvel[i][0];
-      v[i][1] = bvel[i][1];
-      v[i][2] = bvel[i][2];
     }
-  }
+  });
   // force computations outside a step see the state as is, unless a run continues
   pair->pred_valid = 0;
   havepred = 1;

@@ -92,6 +92,7 @@ class FixESPHIntegrate : public Fix {
   double time_file;    // elapsed time and step when the restart file was written
   bigint step_file;
   double dt_used;    // time step of the last force computation, saved at post_run
+  int nthreads;      // threads of the per-atom passes (1; esph/integrate/omp: package omp)
   class PairESPHSolid *pair;
   class ESPHState *state;
 

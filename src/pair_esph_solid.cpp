@@ -29,6 +29,7 @@
 #include "esph_kernel.h"
 #include "esph_state.h"
 #include "esph_strength.h"
+#include "esph_threads.h"
 #include "fix.h"
 #include "fix_esph_integrate.h"
 #include "force.h"
@@ -57,7 +58,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
     hq_cols(NHQ), qcol_b(-1), qcol_d(-1), recon_keep(0), nboundary(0), atom_contact_flag(0),
-    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr)
+    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -515,7 +516,7 @@ void PairESPHSolid::init_style()
                ustyle);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
-  auto fixes = modify->get_fix_by_style("^esph/integrate$");
+  auto fixes = modify->get_fix_by_style("^esph/integrate");
   if (fixes.empty())
     error->all(FLERR, Error::NOLASTLINE,
                "Pair esph/solid requires fix esph/integrate to advance the SPH state");
@@ -689,75 +690,85 @@ void PairESPHSolid::hoist()
   // visc/recon: the strain rates of the last computation become the ones this one uses,
   // unless it re-evaluates the last computation (a continued run)
   double **drec = recon_flag ? state->drec : nullptr;
-  if (drec && !recon_keep)
-    for (int i = 0; i < nlocal; i++)
-      for (int k = 0; k < 6; k++) drec[i][6 + k] = drec[i][k];
+  const int recon_shift = drec && !recon_keep;
   recon_keep = 0;
 
-  double dtmin = BIG_DT;
-  for (int i = 0; i < nlocal; i++) {
-    double *q = hq[i];
-    const double *p = pred ? pred[i] : nullptr;
-    // with fix esph/integrate move no another fix has set v at the end of the step
-    const double *vi = (p && fix_int->move) ? p + FixESPHIntegrate::P_V : v[i];
-    q[Q_V] = vi[0];
-    q[Q_V + 1] = vi[1];
-    q[Q_V + 2] = vi[2];
-    q[Q_N] = state->n[i][0];
-    q[Q_N + 1] = state->n[i][1];
-    q[Q_N + 2] = state->n[i][2];
-    q[Q_GAP] = state->gap[i];
-    q[Q_GAPV] = state->gapv[i];
-    q[Q_ENG] = state->eng[i];
-    if (drec)
-      for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
-    if (rmass[i] > 0.0) {
-      const int itype = type[i];
-      const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
-      const double e = (p ? p[FixESPHIntegrate::P_E] : state->e[i]) * ein;
-      const double h = p ? p[FixESPHIntegrate::P_H] : state->h[i];
-      const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
-      double P, c2;
-      eos[itype].compute(rho, e, P, c2);
-      if (c2 < 0.0) c2 = 0.0;
-      const double c = sqrt(c2);
-      const double inv = 1.0 / (rho * rho);
-      q[Q_RHO] = rho;
-      q[Q_C] = c;
-      q[Q_H] = h;
-      q[Q_A] = (sp[0] * pin - P) * inv;
-      q[Q_A + 1] = (sp[1] * pin - P) * inv;
-      q[Q_A + 2] = (sp[2] * pin - P) * inv;
-      q[Q_A + 3] = sp[3] * pin * inv;
-      q[Q_A + 4] = sp[4] * pin * inv;
-      q[Q_A + 5] = sp[5] * pin * inv;
-      q[Q_E] = e;
-      if (alpha_now) q[qal] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
-      // CFL with the longitudinal wave speed
-      const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
-      const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
-      double dti = h / (cl + vmag);
-      if (heat_flag) {
-        const double divv = p ? p[FixESPHIntegrate::P_DIVV] : -drho[i] / rho;
-        q[Q_ZETA] = g1 * h * c + g2 * h * h * (fabs(divv) - divv);
-        // explicit diffusion with diffusivity zeta: dt <= h^2 / (2 D zeta)
-        if (q[Q_ZETA] > 0.0) dti = MIN(dti, h * h / (2.0 * dim * q[Q_ZETA]));
+  // per chunk of atoms: the smallest time step, the first atom whose h is too large
+  std::vector<double> dtmin(nthreads, BIG_DT);
+  std::vector<int> hbad(nthreads, -1);
+  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int tid) {
+    for (int i = from; i < to; i++) {
+      if (recon_shift)
+        for (int k = 0; k < 6; k++) drec[i][6 + k] = drec[i][k];
+      double *q = hq[i];
+      const double *p = pred ? pred[i] : nullptr;
+      // with fix esph/integrate move no another fix has set v at the end of the step
+      const double *vi = (p && fix_int->move) ? p + FixESPHIntegrate::P_V : v[i];
+      q[Q_V] = vi[0];
+      q[Q_V + 1] = vi[1];
+      q[Q_V + 2] = vi[2];
+      q[Q_N] = state->n[i][0];
+      q[Q_N + 1] = state->n[i][1];
+      q[Q_N + 2] = state->n[i][2];
+      q[Q_GAP] = state->gap[i];
+      q[Q_GAPV] = state->gapv[i];
+      q[Q_ENG] = state->eng[i];
+      if (drec)
+        for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
+      if (rmass[i] > 0.0) {
+        const int itype = type[i];
+        const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
+        const double e = (p ? p[FixESPHIntegrate::P_E] : state->e[i]) * ein;
+        const double h = p ? p[FixESPHIntegrate::P_H] : state->h[i];
+        const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
+        double P, c2;
+        eos[itype].compute(rho, e, P, c2);
+        if (c2 < 0.0) c2 = 0.0;
+        const double c = sqrt(c2);
+        const double inv = 1.0 / (rho * rho);
+        q[Q_RHO] = rho;
+        q[Q_C] = c;
+        q[Q_H] = h;
+        q[Q_A] = (sp[0] * pin - P) * inv;
+        q[Q_A + 1] = (sp[1] * pin - P) * inv;
+        q[Q_A + 2] = (sp[2] * pin - P) * inv;
+        q[Q_A + 3] = sp[3] * pin * inv;
+        q[Q_A + 4] = sp[4] * pin * inv;
+        q[Q_A + 5] = sp[5] * pin * inv;
+        q[Q_E] = e;
+        if (alpha_now) q[qal] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
+        // CFL with the longitudinal wave speed
+        const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
+        const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+        double dti = h / (cl + vmag);
+        if (heat_flag) {
+          const double divv = p ? p[FixESPHIntegrate::P_DIVV] : -drho[i] / rho;
+          q[Q_ZETA] = g1 * h * c + g2 * h * h * (fabs(divv) - divv);
+          // explicit diffusion with diffusivity zeta: dt <= h^2 / (2 D zeta)
+          if (q[Q_ZETA] > 0.0) dti = MIN(dti, h * h / (2.0 * dim * q[Q_ZETA]));
+        } else {
+          q[Q_ZETA] = 0.0;
+        }
+        if (dti < dtmin[tid]) dtmin[tid] = dti;
+        if (hvar_flag && h > hlimit && hbad[tid] < 0) hbad[tid] = i;
       } else {
-        q[Q_ZETA] = 0.0;
+        q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
+        q[Q_H] = state->h[i];
+        for (int k = 0; k < 6; k++) q[Q_A + k] = 0.0;
+        if (alpha_now) q[qal] = 0.0;
       }
-      if (dti < dtmin) dtmin = dti;
-      if (hvar_flag && h > hlimit)
-        error->one(FLERR, Error::NOLASTLINE,
-                   "Smoothing length {} of atom {} exceeds the pair esph/solid limit hvar x h = {}",
-                   h, atom->tag[i], hlimit);
-    } else {
-      q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
-      q[Q_H] = state->h[i];
-      for (int k = 0; k < 6; k++) q[Q_A + k] = 0.0;
-      if (alpha_now) q[qal] = 0.0;
+    }
+  });
+  dt_cfl = BIG_DT;
+  for (int t = 0; t < nthreads; t++) {
+    dt_cfl = MIN(dt_cfl, dtmin[t]);
+    if (hbad[t] >= 0) {
+      const double *p = pred ? pred[hbad[t]] : nullptr;
+      error->one(FLERR, Error::NOLASTLINE,
+                 "Smoothing length {} of atom {} exceeds the pair esph/solid limit hvar x h = {}",
+                 p ? p[FixESPHIntegrate::P_H] : state->h[hbad[t]], atom->tag[hbad[t]], hlimit);
     }
   }
-  dt_cfl = dtmin;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -844,17 +855,15 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // without boundary particles or gradient correction only G and the heating terms
   nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
-  for (int i = 0; i < nall; i++) memset(acc[i], 0, sizeof(double) * nreverse);
+  ESPH::for_chunks(nthreads, nall, [&](int from, int to, int) {
+    for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
+  });
 
   if (correct_flag >= CORRECT_BONETLOK) correction();
   if (astress_flag) artificial_stress();
 
-  ncontact_pairs = ntouch_pairs = 0;
-  fcontact = 0.0;
-  // keep the nodes of body pairs seen before: no allocation in the pair loop once known
-  for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
   if (atom_contact_flag) atom_contact_clear();
-  run_pair_loop(bnd);
+  pair_pass(bnd);
 
   if (force->newton_pair) {
     comm_stage = COMM_ACC;
@@ -866,6 +875,42 @@ void PairESPHSolid::compute(int eflag, int vflag)
   }
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop over the whole neighbour list into acc, atom->f and
+   atom_contact, and its contact tallies (pair esph/solid/omp: in threads)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::pair_pass(int bnd)
+{
+  // keep the nodes of body pairs seen before: no allocation in the pair loop once known
+  for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
+  LoopOut out{0, list->inum, acc, atom->f, atom_contact, &body_tally, 0, 0, 0.0};
+  run_pair_loop(bnd, out);
+  ncontact_pairs = out.ncontact;
+  ntouch_pairs = out.ntouch;
+  fcontact = out.fcontact;
+}
+
+/* ----------------------------------------------------------------------
+   add the accumulated sums src[0..k1-k0) to the slots k0..k1-1 of the acc
+   row dst: sums, except the gap candidates of a boundary particle (bnd),
+   of which the better one is kept (contact_bnd_merge); the reverse
+   communication and the threads' private rows (pair esph/solid/omp)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::combine_acc_row(double *dst, const double *src, int k0, int k1, int bnd) const
+{
+  const int gaps = bnd && (k0 <= B_GAP) && (k1 > B_GAP);
+  for (int k = k0; k < k1; k++) {
+    if (gaps && k == B_GAP) {
+      contact_bnd_merge(dst + B_GAP, src + (k - k0));
+      k += GAP_SLOTS - 1;
+    } else {
+      dst[k] += src[k - k0];
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -912,116 +957,119 @@ void PairESPHSolid::finalize(int eflag)
   const double *rmass = state->rmass;
   double **v = atom->v;
   const int bnd = (nboundary > 0);
-  double esum = 0.0;
   const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
 
-  for (int i = 0; i < nlocal; i++) {
-    const double *a = acc[i];
-    const double *q = hq[i];
-    if (rmass[i] > 0.0) {
-      const double rho = q[Q_RHO];
-      const double *sp = pred_valid ? fix_int->pred[i] + FixESPHIntegrate::P_S : state->s[i];
-      Eigen::Matrix3d L;
-      L << a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8];
-      // continuity (eq. 1): drho_i = sum_j m_j (v_i - v_j).grad_i W = -tr G
-      drho[i] = -(a[0] + a[4] + a[8]);
-      // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, with the correction B_i : G_i (the
-      // work of the corrected forces), plus viscous heating and heat transfer
-      // (in energy/mass units per time, as d_esph_e is stored)
-      double work;
-      if (correct_flag >= CORRECT_BONETLOK) {
-        const double *B = q + qcol_b;
-        work = 0.0;
-        for (int k = 0; k < 9; k++) work += B[k] * a[A_G + k];
-      } else {
-        const double *A = q + Q_A;
-        work = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
-            A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]);
-      }
-      de[i] = (work + a[A_AVHEAT] + a[A_HEAT]) * units.energy;
-      // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
-      // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
-      Eigen::Matrix3d M, Minv;
-      if (correct_flag && correction_inverse(a + A_M, rho, dim, M, Minv))
-        L = L * Minv;
-      else
-        L /= rho;
-      jaumann_rate(L, sp, shear[type[i]], ds[i]);
-      // visc/recon: the strain rate D = sym(L) for the next computation's reconstruction
-      if (recon_flag) {
-        double *d = state->drec[i];
-        d[0] = L(0, 0);
-        d[1] = L(1, 1);
-        d[2] = L(2, 2);
-        d[3] = 0.5 * (L(0, 1) + L(1, 0));
-        d[4] = 0.5 * (L(0, 2) + L(2, 0));
-        d[5] = 0.5 * (L(1, 2) + L(2, 1));
-      }
-      if (xsph_flag)
-        for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
-      // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
-      dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
-      // viscosity switch (Morris and Monaghan 1997): decay to alpha_min over
-      // tau = h / (l c), rise towards alpha under compression, div v = -drho / rho
-      if (vswitch_flag) {
-        const double al = q[qal];
-        const double compress = MAX(drho[i] / rho, 0.0);
-        dalpha[i] = -(al - vswitch_min) * vswitch_l * q[Q_C] / q[Q_H] + compress * (alpha - al);
-      }
-      if (bnd) store_normal(i);
-      if (eflag) {
-        const double ei = rmass[i] * q[Q_E] * units.energy;
-        esum += ei;
-        if (eflag_atom) eatom[i] += ei;
-      }
-    } else {
-      // boundary particle: interpolated velocity and spin from the real particles (4.2)
-      store_bnd_gap(i);
-      drho[i] = de[i] = dh[i] = 0.0;
-      for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
-      if (vswitch_flag) dalpha[i] = 0.0;
-      if (recon_flag)
-        for (int k = 0; k < 6; k++) state->drec[i][k] = 0.0;
-      if (a[B_WSUM] > 0.0) {
-        // interpolation from the real particles p of the body: with the Shepard means
-        // vbar, xi = xbar - x_k, and the corrected velocity gradient
-        //   L = (A - vbar (x) b) (M - xi (x) b)^-1,
-        // exact for a linear velocity field where the kernel is one-sided (surface)
-        const double inv = 1.0 / a[B_WSUM];
-        const double vbar[3] = {a[B_VSUM] * inv, a[B_VSUM + 1] * inv, a[B_VSUM + 2] * inv};
-        const double xi[3] = {a[B_XSUM] * inv, a[B_XSUM + 1] * inv, a[B_XSUM + 2] * inv};
-        Eigen::Matrix3d Lk, M;
-        for (int r = 0; r < 3; r++)
-          for (int c = 0; c < 3; c++) {
-            Lk(r, c) = a[B_A + 3 * r + c] - vbar[r] * a[B_B + c];
-            M(r, c) = a[B_M + 3 * r + c] - xi[r] * a[B_B + c];
-          }
-        for (int d = dim; d < 3; d++) M(d, d) = 1.0;
-        if (fabs(M.determinant()) > 1.0e-6)
-          Lk = Lk * M.inverse();
+  std::vector<double> esum(nthreads, 0.0);
+  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int tid) {
+    for (int i = from; i < to; i++) {
+      const double *a = acc[i];
+      const double *q = hq[i];
+      if (rmass[i] > 0.0) {
+        const double rho = q[Q_RHO];
+        const double *sp = pred_valid ? fix_int->pred[i] + FixESPHIntegrate::P_S : state->s[i];
+        Eigen::Matrix3d L;
+        L << a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8];
+        // continuity (eq. 1): drho_i = sum_j m_j (v_i - v_j).grad_i W = -tr G
+        drho[i] = -(a[0] + a[4] + a[8]);
+        // energy (eq. 3): de_i = sigma_i : G_i / rho_i^2, with the correction B_i : G_i (the
+        // work of the corrected forces), plus viscous heating and heat transfer
+        // (in energy/mass units per time, as d_esph_e is stored)
+        double work;
+        if (correct_flag >= CORRECT_BONETLOK) {
+          const double *B = q + qcol_b;
+          work = 0.0;
+          for (int k = 0; k < 9; k++) work += B[k] * a[A_G + k];
+        } else {
+          const double *A = q + Q_A;
+          work = A[0] * a[0] + A[1] * a[4] + A[2] * a[8] + A[3] * (a[1] + a[3]) +
+              A[4] * (a[2] + a[6]) + A[5] * (a[5] + a[7]);
+        }
+        de[i] = (work + a[A_AVHEAT] + a[A_HEAT]) * units.energy;
+        // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
+        // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
+        Eigen::Matrix3d M, Minv;
+        if (correct_flag && correction_inverse(a + A_M, rho, dim, M, Minv))
+          L = L * Minv;
         else
-          Lk.setZero();
-        // the boundary particle moves with the Shepard mean corrected by the rotation
-        // only: extrapolating the strain part would overshoot at impact fronts
-        const Eigen::Matrix3d Wk = 0.5 * (Lk - Lk.transpose());
-        double vk[3];
-        for (int r = 0; r < 3; r++)
-          vk[r] = vbar[r] - (Wk(r, 0) * xi[0] + Wk(r, 1) * xi[1] + Wk(r, 2) * xi[2]);
-        bvel[i][0] = vk[0];
-        bvel[i][1] = vk[1];
-        bvel[i][2] = vk[2];
-        bspin[i][0] = 0.5 * (Lk(0, 1) - Lk(1, 0));
-        bspin[i][1] = 0.5 * (Lk(0, 2) - Lk(2, 0));
-        bspin[i][2] = 0.5 * (Lk(1, 2) - Lk(2, 1));
+          L /= rho;
+        jaumann_rate(L, sp, shear[type[i]], ds[i]);
+        // visc/recon: the strain rate D = sym(L) for the next computation's reconstruction
+        if (recon_flag) {
+          double *d = state->drec[i];
+          d[0] = L(0, 0);
+          d[1] = L(1, 1);
+          d[2] = L(2, 2);
+          d[3] = 0.5 * (L(0, 1) + L(1, 0));
+          d[4] = 0.5 * (L(0, 2) + L(2, 0));
+          d[5] = 0.5 * (L(1, 2) + L(2, 1));
+        }
+        if (xsph_flag)
+          for (int d = 0; d < 3; d++) xsph[i][d] = xsph_eps * a[A_XSPH + d];
+        // variable smoothing length (eq. 24): dh/dt = -h/(D rho) drho/dt
+        dh[i] = hvar_flag ? -q[Q_H] / (dim * rho) * drho[i] : 0.0;
+        // viscosity switch (Morris and Monaghan 1997): decay to alpha_min over
+        // tau = h / (l c), rise towards alpha under compression, div v = -drho / rho
+        if (vswitch_flag) {
+          const double al = q[qal];
+          const double compress = MAX(drho[i] / rho, 0.0);
+          dalpha[i] = -(al - vswitch_min) * vswitch_l * q[Q_C] / q[Q_H] + compress * (alpha - al);
+        }
+        if (bnd) store_normal(i);
+        if (eflag) {
+          const double ei = rmass[i] * q[Q_E] * units.energy;
+          esum[tid] += ei;
+          if (eflag_atom) eatom[i] += ei;
+        }
       } else {
-        bvel[i][0] = v[i][0];
-        bvel[i][1] = v[i][1];
-        bvel[i][2] = v[i][2];
-        bspin[i][0] = bspin[i][1] = bspin[i][2] = 0.0;
+        // boundary particle: interpolated velocity and spin from the real particles (4.2)
+        store_bnd_gap(i);
+        drho[i] = de[i] = dh[i] = 0.0;
+        for (int k = 0; k < 6; k++) ds[i][k] = 0.0;
+        if (vswitch_flag) dalpha[i] = 0.0;
+        if (recon_flag)
+          for (int k = 0; k < 6; k++) state->drec[i][k] = 0.0;
+        if (a[B_WSUM] > 0.0) {
+          // interpolation from the real particles p of the body: with the Shepard means
+          // vbar, xi = xbar - x_k, and the corrected velocity gradient
+          //   L = (A - vbar (x) b) (M - xi (x) b)^-1,
+          // exact for a linear velocity field where the kernel is one-sided (surface)
+          const double inv = 1.0 / a[B_WSUM];
+          const double vbar[3] = {a[B_VSUM] * inv, a[B_VSUM + 1] * inv, a[B_VSUM + 2] * inv};
+          const double xi[3] = {a[B_XSUM] * inv, a[B_XSUM + 1] * inv, a[B_XSUM + 2] * inv};
+          Eigen::Matrix3d Lk, M;
+          for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++) {
+              Lk(r, c) = a[B_A + 3 * r + c] - vbar[r] * a[B_B + c];
+              M(r, c) = a[B_M + 3 * r + c] - xi[r] * a[B_B + c];
+            }
+          for (int d = dim; d < 3; d++) M(d, d) = 1.0;
+          if (fabs(M.determinant()) > 1.0e-6)
+            Lk = Lk * M.inverse();
+          else
+            Lk.setZero();
+          // the boundary particle moves with the Shepard mean corrected by the rotation
+          // only: extrapolating the strain part would overshoot at impact fronts
+          const Eigen::Matrix3d Wk = 0.5 * (Lk - Lk.transpose());
+          double vk[3];
+          for (int r = 0; r < 3; r++)
+            vk[r] = vbar[r] - (Wk(r, 0) * xi[0] + Wk(r, 1) * xi[1] + Wk(r, 2) * xi[2]);
+          bvel[i][0] = vk[0];
+          bvel[i][1] = vk[1];
+          bvel[i][2] = vk[2];
+          bspin[i][0] = 0.5 * (Lk(0, 1) - Lk(1, 0));
+          bspin[i][1] = 0.5 * (Lk(0, 2) - Lk(2, 0));
+          bspin[i][2] = 0.5 * (Lk(1, 2) - Lk(2, 1));
+        } else {
+          bvel[i][0] = v[i][0];
+          bvel[i][1] = v[i][1];
+          bvel[i][2] = v[i][2];
+          bspin[i][0] = bspin[i][1] = bspin[i][2] = 0.0;
+        }
       }
     }
-  }
-  if (eflag_global) eng_vdwl += esum;
+  });
+  if (eflag_global)
+    for (int t = 0; t < nthreads; t++) eng_vdwl += esum[t];
   if (bnd) normals_valid = 1;
 }
 
@@ -1182,16 +1230,8 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
       k0 = A_M;
       k1 = A_M + 9;
     }
-    const int gaps = (k1 > A_GW) && (rmass[j] == 0.0);
-    for (int k = k0; k < k1; k++) {
-      if (gaps && k == B_GAP) {
-        contact_bnd_merge(a + B_GAP, buf + m);
-        m += GAP_SLOTS;
-        k += GAP_SLOTS - 1;
-      } else {
-        a[k] += buf[m++];
-      }
-    }
+    combine_acc_row(a, buf + m, k0, k1, rmass[j] == 0.0);
+    m += k1 - k0;
   }
 }
 

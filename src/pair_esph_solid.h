@@ -142,7 +142,8 @@ class PairESPHSolid : public Pair {
   double fcontact;       // sum of transmitted compressive normal pair forces (local)
   // per pair of bodies (I < J) of the last compute: touching pairs, interacting pairs,
   // transmitted compressive normal force (local sums)
-  std::map<std::pair<int, int>, std::array<double, 3>> body_tally;
+  using BodyTally = std::map<std::pair<int, int>, std::array<double, 3>>;
+  BodyTally body_tally;
   bigint nboundary;    // number of boundary (zero-mass) particles, counted at setup
 
   // per-atom contact output for compute esph/atom, only while one asks for it (its init()
@@ -154,6 +155,18 @@ class PairESPHSolid : public Pair {
 
   class ESPHState *state;
   class FixESPHIntegrate *fix_int;
+  int nthreads;    // threads of the per-atom passes and the pair loop (1; /omp: package omp)
+
+  // one pass of the pair loop: the neighbour list entries [iifrom, iito) it takes, the rows
+  // it adds to (of acc, atom->f and atom_contact: the arrays themselves, or for a thread of
+  // pair esph/solid/omp its private rows of the atoms it does not own) and its tallies
+  struct LoopOut {
+    int iifrom, iito;
+    double **acc, **f, **catom;
+    BodyTally *tally;
+    int ncontact, ntouch;
+    double fcontact;
+  };
 
   virtual void allocate();
   void set_defaults();
@@ -162,19 +175,22 @@ class PairESPHSolid : public Pair {
   void finalize(int eflag);
   void compute_normals();
   void store_bnd_gap(int);
-  std::array<double, 3> &tally_bodies(int, int);
+  static std::array<double, 3> &tally_bodies(BodyTally &, int, int);
+  void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
   void artificial_stress();
   void atom_contact_clear();
-  void run_pair_loop(int);
-  template <int BND> void run_hvar();
-  template <int BND, int HVAR> void run_heat();
-  template <int BND, int HVAR, int HEAT> void run_corr();
+  virtual void pair_pass(int);
+  void run_pair_loop(int, LoopOut &);
+  template <int BND> void run_hvar(LoopOut &);
+  template <int BND, int HVAR> void run_heat(LoopOut &);
+  template <int BND, int HVAR, int HEAT> void run_corr(LoopOut &);
   void correction();
   template <int HVAR> void correction_loop();
-  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra();
-  template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA> void pair_loop_select(int);
-  template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop();
+  template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra(LoopOut &);
+  template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA>
+  void pair_loop_select(int, LoopOut &);
+  template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void pair_loop(LoopOut &);
 };
 
 }    // namespace LAMMPS_NS

@@ -71,15 +71,14 @@ void PairESPHSolid::store_normal(int i)
 }
 
 /* ----------------------------------------------------------------------
-   the tally of the pair of bodies a, b (in either order) of this compute
+   the entry of the pair of bodies a, b (in either order) in a tally
 ------------------------------------------------------------------------- */
 
-std::array<double, 3> &PairESPHSolid::tally_bodies(int a, int b)
+std::array<double, 3> &PairESPHSolid::tally_bodies(BodyTally &tally, int a, int b)
 {
   const auto key = (a < b) ? std::make_pair(a, b) : std::make_pair(b, a);
-  auto it = body_tally.find(key);
-  if (it == body_tally.end())
-    it = body_tally.emplace(key, std::array<double, 3>{0.0, 0.0, 0.0}).first;
+  auto it = tally.find(key);
+  if (it == tally.end()) it = tally.emplace(key, std::array<double, 3>{0.0, 0.0, 0.0}).first;
   return it->second;
 }
 

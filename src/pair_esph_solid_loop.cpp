@@ -41,10 +41,17 @@ using namespace ESPHSolid;
      the real particle's normal sums (eq. 30)
 ------------------------------------------------------------------------- */
 
-template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::pair_loop()
+template <int BND, int HVAR, int HEAT, int CORR, int EXTRA>
+void PairESPHSolid::pair_loop(LoopOut &out)
 {
   double **x = atom->x;
-  double **f = atom->f;
+  // the rows this pass adds to (LoopOut)
+  double **const f = out.f;
+  double **const acc = out.acc;
+  double **const catom = out.catom;
+  BodyTally &tally = *out.tally;
+  int ncontact = 0, ntouch = 0;
+  double fcont = 0.0;
   const tagint *tag = atom->tag;
   const double *rmass = state->rmass;
   const int *body = state->body;
@@ -83,12 +90,11 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
     wdp_inv0 = 1.0 / wdp;
   }
 
-  const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
-  for (int ii = 0; ii < inum; ii++) {
+  for (int ii = out.iifrom; ii < out.iito; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
     const double mi = rmass[i];
@@ -287,8 +293,8 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
           touching = contact_approach(vn, xn);
         }
         if (touching && count_pair) {
-          ntouch_pairs++;
-          tally_bodies(bi, body[j])[0] += 1.0;
+          ntouch++;
+          tally_bodies(tally, bi, body[j])[0] += 1.0;
         }
         // solid: no tension across contact, a pair that would pull (or not push) does not
         // interact at all (also not in the strain rate and energy, which would otherwise see
@@ -324,16 +330,15 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         // transmitted compressive normal force; with newton off a pair with a ghost
         // partner is seen by two ranks
         const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
-        fcontact += fpair;
-        auto &tb = tally_bodies(bi, body[j]);
+        fcont += fpair;
+        auto &tb = tally_bodies(tally, bi, body[j]);
         tb[2] += fpair;
         if (count_pair) {
-          ncontact_pairs++;
+          ncontact++;
           tb[1] += 1.0;
         }
         // per-atom contact output of compute esph/atom, only when one asks for it
         if (atom_contact_flag) {
-          double **catom = atom_contact;
           catom[i][0] += 1.0;
           catom[i][1] -= fn;
           if (jown) {
@@ -408,13 +413,16 @@ template <int BND, int HVAR, int HEAT, int CORR, int EXTRA> void PairESPHSolid::
         for (int k = 0; k < 9; k++) ai[A_M + k] += mci[k];
     }
   }
+  out.ncontact += ncontact;
+  out.ntouch += ntouch;
+  out.fcontact += fcont;
 }
 
 /* ----------------------------------------------------------------------
    dispatch: optional physics switched off is compiled out of the pair loop
 ------------------------------------------------------------------------- */
 
-template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra()
+template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_extra(LoopOut &out)
 {
   const int extra = (astress_flag ? EXTRA_ASTRESS : 0) | (xsph_flag ? EXTRA_XSPH : 0) |
       ((vswitch_flag || recon_flag) ? EXTRA_VISC : 0);
@@ -423,82 +431,83 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_e
     const int fric = (friction > 0.0 && contact != CONTACT_OFF);
     switch ((fric ? EXTRA_FRICTION : 0) | (rigid_flag ? EXTRA_RIGID : 0)) {
       case EXTRA_FRICTION:
-        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra);
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra, out);
         return;
       case EXTRA_RIGID:
-        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_RIGID>(extra);
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_RIGID>(extra, out);
         return;
       case EXTRA_FRICTION | EXTRA_RIGID:
-        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION | EXTRA_RIGID>(extra);
+        pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION | EXTRA_RIGID>(extra, out);
         return;
       default:
         break;
     }
   }
-  pair_loop_select<BND, HVAR, HEAT, CORR, 0>(extra);
+  pair_loop_select<BND, HVAR, HEAT, CORR, 0>(extra, out);
 }
 
 template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA>
-void PairESPHSolid::pair_loop_select(int extra)
+void PairESPHSolid::pair_loop_select(int extra, LoopOut &out)
 {
   switch (extra) {
     case 0:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA>(out);
       break;
     case EXTRA_ASTRESS:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS>(out);
       break;
     case EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_XSPH>(out);
       break;
     case EXTRA_ASTRESS | EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_ASTRESS | EXTRA_XSPH>(out);
       break;
     case EXTRA_VISC:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC>(out);
       break;
     case EXTRA_VISC | EXTRA_ASTRESS:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS>(out);
       break;
     case EXTRA_VISC | EXTRA_XSPH:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_XSPH>(out);
       break;
     default:
-      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS | EXTRA_XSPH>();
+      pair_loop<BND, HVAR, HEAT, CORR, CONTACT_EXTRA | EXTRA_VISC | EXTRA_ASTRESS | EXTRA_XSPH>(
+          out);
       break;
   }
 }
 
-template <int BND, int HVAR, int HEAT> void PairESPHSolid::run_corr()
+template <int BND, int HVAR, int HEAT> void PairESPHSolid::run_corr(LoopOut &out)
 {
   if (correct_flag >= CORRECT_BONETLOK)
-    pair_loop_extra<BND, HVAR, HEAT, 2>();
+    pair_loop_extra<BND, HVAR, HEAT, 2>(out);
   else if (correct_flag == CORRECT_RATE)
-    pair_loop_extra<BND, HVAR, HEAT, 1>();
+    pair_loop_extra<BND, HVAR, HEAT, 1>(out);
   else
-    pair_loop_extra<BND, HVAR, HEAT, 0>();
+    pair_loop_extra<BND, HVAR, HEAT, 0>(out);
 }
 
-template <int BND, int HVAR> void PairESPHSolid::run_heat()
+template <int BND, int HVAR> void PairESPHSolid::run_heat(LoopOut &out)
 {
   if (heat_flag)
-    run_corr<BND, HVAR, 1>();
+    run_corr<BND, HVAR, 1>(out);
   else
-    run_corr<BND, HVAR, 0>();
+    run_corr<BND, HVAR, 0>(out);
 }
 
-template <int BND> void PairESPHSolid::run_hvar()
+template <int BND> void PairESPHSolid::run_hvar(LoopOut &out)
 {
   if (hvar_flag)
-    run_heat<BND, 1>();
+    run_heat<BND, 1>(out);
   else
-    run_heat<BND, 0>();
+    run_heat<BND, 0>(out);
 }
 
-void PairESPHSolid::run_pair_loop(int bnd)
+void PairESPHSolid::run_pair_loop(int bnd, LoopOut &out)
 {
   if (bnd)
-    run_hvar<1>();
+    run_hvar<1>(out);
   else
-    run_hvar<0>();
+    run_hvar<0>(out);
 }

@@ -2,7 +2,7 @@
 # One-stop setup for the ESPH package on Debian 12 (run as root, or with the packages installed):
 #   1. installs the Debian packages needed (compilers, CMake, Ninja, Open MPI, Eigen, GoogleTest, ...)
 #   2. fetches the pinned LAMMPS source (tools/fetch_lammps.sh) into a cache outside the work tree
-#   3. builds that LAMMPS once (PLUGIN, MACHDYN, SPH, MPI, shared library) in the cache,
+#   3. builds that LAMMPS once (PLUGIN, MACHDYN, SPH, OPENMP, MPI + OpenMP, shared library) in the cache,
 #      keyed by version and options, so a second setup on the same machine takes seconds
 #   4. configures and builds this project in ./build: esphplugin.so, build/lmp (ESPH compiled in),
 #      and the test programs
@@ -40,8 +40,8 @@ done
 lsrc=$("$here/tools/fetch_lammps.sh" "$cache") || die "could not obtain the LAMMPS source"
 
 # ---------- 3. host LAMMPS (no ESPH inside), cached by version + options ----------
-opts=(-D CMAKE_BUILD_TYPE=Release -D BUILD_MPI=on -D BUILD_OMP=off -D BUILD_SHARED_LIBS=on
-      -D PKG_PLUGIN=on -D PKG_MACHDYN=on -D PKG_SPH=on -D PKG_GRAPHICS=on -D DOWNLOAD_EIGEN3=off -D WITH_PNG=on -D WITH_JPEG=on
+opts=(-D CMAKE_BUILD_TYPE=Release -D BUILD_MPI=on -D BUILD_OMP=on -D BUILD_SHARED_LIBS=on
+      -D PKG_PLUGIN=on -D PKG_MACHDYN=on -D PKG_SPH=on -D PKG_GRAPHICS=on -D PKG_OPENMP=on -D DOWNLOAD_EIGEN3=off -D WITH_PNG=on -D WITH_JPEG=on
       -D WITH_GZIP=on -D WITH_FFMPEG=off -D LAMMPS_EXCEPTIONS=on)
 key=$(printf '%s\n' "20260704+dfsg-2" "$(g++ -dumpfullversion)" "${opts[@]}" | sha256sum | cut -c1-12)
 export CCACHE_DIR="${CCACHE_DIR:-$cache/ccache}" CCACHE_BASEDIR="$cache" CCACHE_NOHASHDIR=1

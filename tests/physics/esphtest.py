@@ -29,8 +29,9 @@ def parse_args():
     return a
 
 
-def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900):
-    """run lmp -in infile with -var overrides; return the log text. An example input
+def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900, flags=()):
+    """run lmp -in infile with -var overrides (and more command-line flags, e.g.
+    ("-sf", "omp", "-pk", "omp", "2")); return the log text. An example input
     (path relative to examples/) runs in a copy of the examples tree inside the work dir,
     so that inputs that include others (../rod_impact/in.rod_impact) find them."""
     if os.path.isabs(infile):
@@ -40,7 +41,7 @@ def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900):
         if not os.path.isdir(tree):
             shutil.copytree(EXAMPLES, tree, ignore=shutil.ignore_patterns("log.*"))
         cwd, name = os.path.join(tree, os.path.dirname(infile)), os.path.basename(infile)
-    cmd = [args.lmp, "-in", name, "-log", log, "-nocite", "-screen", "none"]
+    cmd = [args.lmp, "-in", name, "-log", log, "-nocite", "-screen", "none"] + list(flags)
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     if np > 1:
