@@ -86,16 +86,27 @@ void PairESPHSolidOMP::build_rows()
   int **firstneigh = list->firstneigh;
   double **f = atom->f;
 
-  // chunks of about equal numbers of listed pairs
+  // chunks of about equal work: a listed pair of two real particles counts REAL_PAIR_COST,
+  // one with a boundary particle 1, and each atom 1
   thr.resize(nthreads);
-  bigint npairs = 0;
-  for (int ii = 0; ii < inum; ii++) npairs += numneigh[ilist[ii]] + 1;
+  const double *rmass = state->rmass;
+  std::vector<bigint> work(inum);
+  bigint total = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int *jlist = firstneigh[i];
+    bigint w = 1;
+    for (int jj = 0; jj < numneigh[i]; jj++)
+      w += (rmass[i] > 0.0 && rmass[jlist[jj] & NEIGHMASK] > 0.0) ? REAL_PAIR_COST : 1;
+    work[ii] = w;
+    total += w;
+  }
   bigint sum = 0;
   int ii = 0;
   for (int t = 0; t < nthreads; t++) {
     thr[t].from = ii;
-    const bigint target = npairs * (t + 1) / nthreads;
-    while (ii < inum && (sum < target || t == nthreads - 1)) sum += numneigh[ilist[ii++]] + 1;
+    const bigint target = total * (t + 1) / nthreads;
+    while (ii < inum && (sum < target || t == nthreads - 1)) sum += work[ii++];
     thr[t].to = ii;
   }
   owner.assign(nall, -1);
