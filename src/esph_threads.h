@@ -64,13 +64,16 @@ template <class F> void for_chunks(int nthreads, int n, F &&fn)
 {
 #if defined(_OPENMP)
   if (nthreads > 1) {
+    // the threads share a copy: the caller's closure does not escape, so that in the
+    // serial call below its captures can stay in registers
+    const auto shared = fn;
 #pragma omp parallel num_threads(nthreads)
     {
       const int team = team_size();
       for (int tid = thread_id(); tid < nthreads; tid += team) {
         int from, to;
         thread_chunk(n, nthreads, tid, from, to);
-        fn(from, to, tid);
+        shared(from, to, tid);
       }
     }
     return;

@@ -261,7 +261,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   const double *dalpha = pair->dalpha;
   const double amin = pair->vswitch_min, amax = pair->alpha;
 
-  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int) {
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
       double *p = pred[i];
       if (i < nint && (mask[i] & groupbit)) {
@@ -470,7 +470,7 @@ void FixESPHIntegrate::final_integrate()
   const double *de = pair->de;
   double **bvel = pair->bvel;
 
-  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int) {
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
       if (!(mask[i] & groupbit)) continue;
       if (rmass[i] > 0.0) {

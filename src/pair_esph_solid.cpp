@@ -696,7 +696,12 @@ void PairESPHSolid::hoist()
   // per chunk of atoms: the smallest time step, the first atom whose h is too large
   std::vector<double> dtmin(nthreads, BIG_DT);
   std::vector<int> hbad(nthreads, -1);
-  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int tid) {
+  double *const dtmin_t = dtmin.data();
+  int *const hbad_t = hbad.data();
+  // (captures by value: the pointers in registers, as in a plain loop)
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
+    double dtl = BIG_DT;
+    int hb = -1;
     for (int i = from; i < to; i++) {
       if (recon_shift)
         for (int k = 0; k < 6; k++) drec[i][6 + k] = drec[i][k];
@@ -749,8 +754,8 @@ void PairESPHSolid::hoist()
         } else {
           q[Q_ZETA] = 0.0;
         }
-        if (dti < dtmin[tid]) dtmin[tid] = dti;
-        if (hvar_flag && h > hlimit && hbad[tid] < 0) hbad[tid] = i;
+        if (dti < dtl) dtl = dti;
+        if (hvar_flag && h > hlimit && hb < 0) hb = i;
       } else {
         q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
         q[Q_H] = state->h[i];
@@ -758,6 +763,8 @@ void PairESPHSolid::hoist()
         if (alpha_now) q[qal] = 0.0;
       }
     }
+    dtmin_t[tid] = dtl;
+    hbad_t[tid] = hb;
   });
   dt_cfl = BIG_DT;
   for (int t = 0; t < nthreads; t++) {
@@ -855,7 +862,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // without boundary particles or gradient correction only G and the heating terms
   nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
-  ESPH::for_chunks(nthreads, nall, [&](int from, int to, int) {
+  ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
     for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
   });
 
@@ -960,7 +967,9 @@ void PairESPHSolid::finalize(int eflag)
   const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
 
   std::vector<double> esum(nthreads, 0.0);
-  ESPH::for_chunks(nthreads, nlocal, [&](int from, int to, int tid) {
+  double *const esum_t = esum.data();
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
+    double es = 0.0;
     for (int i = from; i < to; i++) {
       const double *a = acc[i];
       const double *q = hq[i];
@@ -1017,7 +1026,7 @@ void PairESPHSolid::finalize(int eflag)
         if (bnd) store_normal(i);
         if (eflag) {
           const double ei = rmass[i] * q[Q_E] * units.energy;
-          esum[tid] += ei;
+          es += ei;
           if (eflag_atom) eatom[i] += ei;
         }
       } else {
@@ -1067,6 +1076,7 @@ void PairESPHSolid::finalize(int eflag)
         }
       }
     }
+    esum_t[tid] = es;
   });
   if (eflag_global)
     for (int t = 0; t < nthreads; t++) eng_vdwl += esum[t];

@@ -94,7 +94,8 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
-  for (int ii = out.iifrom; ii < out.iito; ii++) {
+  const int iifrom = out.iifrom, iito = out.iito;
+  for (int ii = iifrom; ii < iito; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
     const double mi = rmass[i];
