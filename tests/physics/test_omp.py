@@ -2,7 +2,8 @@
 """OpenMP threads (pair esph/solid/omp, fix esph/integrate/omp; -sf omp -pk omp N) give the
 answer of the styles without threads to round-off, alone and with MPI.
 
-Scenes: the 3D rod impact at 0.25 mm (contact from the first step; with an initial gap of
+Scenes: the 3D rod impact at 0.25 mm (contact from the first step; with newton off on 2
+ranks; in 1D and 2D; with an initial gap of
 one spacing, where boundary particles merge their surface gaps across threads; with the
 options visc/switch, visc/recon, heat, hvar, xsph, artstress and gradient bonet/lok, which
 add columns to the sums), three bodies in a row (compute esph/contact, one row per
@@ -76,6 +77,16 @@ mpi2 = et.run(a, ROD, rod, np=2, log="log.rod.np2t2", flags=omp(2))
 compare("rod, 2 ranks x 2 threads vs 1 rank", ref, et.production_thermo(mpi2))
 compare("rod, 2 ranks x 2 threads vs 2 ranks", et.production_thermo(mpi1),
         et.production_thermo(mpi2))
+
+# ---- newton off (pairs with ghost partners computed on both ranks), 1D and 2D
+noff = dict(rod, newton="off")
+compare("rod, newton off, 2 ranks x 2 threads vs newton on, no threads", ref,
+        et.production_thermo(et.run(a, ROD, noff, np=2, log="log.noff.np2t2", flags=omp(2))))
+for dim, dx in ((1, 0.1), (2, 0.25)):
+    v = dict(rod, dim=dim, dx=dx, Limp=20.0, Ltgt=20.0, tend=3.0)
+    d0 = et.production_thermo(et.run(a, ROD, v, log=f"log.d{dim}.t0"))
+    compare(f"rod {dim}D, 2 threads vs none", d0,
+            et.production_thermo(et.run(a, ROD, v, log=f"log.d{dim}.t2", flags=omp(2))))
 
 # ---- initial gap of one spacing (boundary particles' surface gaps from several threads):
 # the gap closes at 5 us, the run ends in contact
