@@ -48,45 +48,7 @@ SPLITS = {"slabs": 100}
 # scenes: (setup text for a fresh start, style text to define again after read_restart)
 
 
-def block_scene(fixopts, pstyle="", pcoeff="", extra_out="", xcols=""):
-    styles = f"""pair_style esph/solid 1e-4 {pstyle}
-pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69 {pcoeff}
-fix int all esph/integrate {fixopts}
-"""
-    output = f"""fix bnd all esph/boundary spacing 1e-4
-neighbor 2e-5 bin
-variable px atom mass*vx
-variable py atom mass*vy
-variable pz atom mass*vz
-compute mom all reduce sum v_px v_py v_pz
-{extra_out}
-thermo_style custom step time dt ke pe etotal c_mom[1] c_mom[2] c_mom[3] f_int[1] f_int[2] &
-  f_int[3] f_int[4] f_int[5] f_int[6] f_int[7] f_int[8] {xcols}
-thermo_modify format float %.17g
-thermo 5
-"""
-    fresh = f"""units si
-atom_style atomic
-atom_modify map array
-boundary f f f
-region box block -0.0004 0.0013 -0.0009 0.0007 -0.0003 0.0009
-create_box 2 box
-lattice sc 1e-4 origin 0.5 0.5 0.5
-region ra block 0 8e-4 -6e-4 0 0 6e-4 units box
-region rb block 1e-4 7e-4 0 4e-4 0 6e-4 units box
-create_atoms 1 region ra
-create_atoms 2 region rb
-group A region ra
-group B region rb
-region rtop block INF INF 2e-4 INF INF INF units box
-group Btop region rtop
-{styles}timestep 4e-9
-set group all mass 7.85e-9
-set group A i_esph_body 1
-set group B i_esph_body 2
-velocity B set 60 -70 0 units box
-{output}"""
-    return fresh, styles + output
+block_scene = et.block_scene
 
 
 scenes = {}

@@ -128,46 +128,15 @@ for key in ("ep12", "ep23", "row1_I", "row1_J", "row2_I", "row2_J"):
     c.true(f"cradle {key}: 2 threads as none ({k2[key]:.0f})", k2[key] == k0[key], "integers")
 
 # ---- per-atom contact force (compute esph/atom) in mid-contact, split run and restart:
-# an oblique block impact (test_continuation's scene)
-STYLES = """pair_style esph/solid 1e-4
-pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
-fix int all esph/integrate cfl 0.3
-"""
-OUTPUT = """fix bnd all esph/boundary spacing 1e-4
-neighbor 2e-5 bin
-variable px atom mass*vx
-variable py atom mass*vy
-compute mom all reduce sum v_px v_py
-{dump}thermo_style custom step time dt ke pe etotal c_mom[1] c_mom[2] f_int[1] f_int[2] &
-  f_int[3] f_int[4] f_int[5] f_int[6] f_int[7] f_int[8]
-thermo_modify format float %.17g
-thermo 5
-"""
+# test_continuation's oblique block impact
 DUMP = ("compute ca all esph/atom contact/force contact\n"
         "dump da all custom 20 atom.*.dump id c_ca[1] c_ca[2] vx vy vz\n"
         "dump_modify da sort id format float %.17g\n")
+AGAIN = et.block_scene("cfl 0.3")[1]
 
 
 def block(run_text, dump=""):
-    return """units si
-atom_style atomic
-atom_modify map array
-boundary f f f
-region box block -0.0004 0.0013 -0.0009 0.0007 -0.0003 0.0009
-create_box 2 box
-lattice sc 1e-4 origin 0.5 0.5 0.5
-region ra block 0 8e-4 -6e-4 0 0 6e-4 units box
-region rb block 1e-4 7e-4 0 4e-4 0 6e-4 units box
-create_atoms 1 region ra
-create_atoms 2 region rb
-group A region ra
-group B region rb
-""" + STYLES + """timestep 4e-9
-set group all mass 7.85e-9
-set group A i_esph_body 1
-set group B i_esph_body 2
-velocity B set 60 -70 0 units box
-""" + OUTPUT.format(dump=dump) + run_text
+    return et.block_scene("cfl 0.3", extra_out=dump)[0] + run_text
 
 
 def dumps(dirname, step):
@@ -219,7 +188,6 @@ full = block_run("full", [block("run 100\n")])
 split = block_run("split", [block("run 30\nrun 70\n")])
 compare("block, 2 threads: split run vs uninterrupted", full, split)
 restart = block_run("restart", [block("run 30\nwrite_restart r.bin\n"),
-                                 "read_restart r.bin\n" + STYLES + OUTPUT.format(dump="")
-                                 + "run 70\n"])
+                                 "read_restart r.bin\n" + AGAIN + "run 70\n"])
 compare("block, 2 threads: restart in a new process vs uninterrupted", full, restart)
 c.done()
