@@ -186,7 +186,10 @@ class PairESPHSolid : public Pair {
   template <int BND, int HVAR> void run_heat(LoopOut &);
   template <int BND, int HVAR, int HEAT> void run_corr(LoopOut &);
   void correction();
-  template <int HVAR> void correction_loop();
+  // the correction sums over the neighbor list (/omp: in threads); one range of it into rows
+  virtual void correction_pass();
+  void run_correction_loop(int, int, double **);
+  template <int HVAR> void correction_loop(int, int, double **);
   template <int BND, int HVAR, int HEAT, int CORR> void pair_loop_extra(LoopOut &);
   template <int BND, int HVAR, int HEAT, int CORR, int CONTACT_EXTRA>
   void pair_loop_select(int, LoopOut &);

@@ -25,6 +25,7 @@
 #include "esph_kernel.h"
 #include "esph_state.h"
 #include "esph_strength.h"
+#include "esph_threads.h"
 #include "force.h"
 #include "neigh_list.h"
 
@@ -32,6 +33,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace ESPH;
@@ -51,10 +53,7 @@ using namespace ESPHSolid;
 
 void PairESPHSolid::correction()
 {
-  if (hvar_flag)
-    correction_loop<1>();
-  else
-    correction_loop<0>();
+  correction_pass();
   if (force->newton_pair) {
     comm_stage = COMM_CORR;
     comm->reverse_comm(this, 9);
@@ -64,45 +63,51 @@ void PairESPHSolid::correction()
   const double *rmass = state->rmass;
   const int *type = atom->type;
   const double pin = units.pressure_in;
-  double dtmin = dt_cfl;
-  for (int i = 0; i < nlocal; i++) {
-    const double *q = hq[i];
-    const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
-    double *B = hq[i] + qcol_b;
-    Eigen::Matrix3d M, Minv, Bm;
-    if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, M, Minv)) {
-      if (correct_flag == CORRECT_BONETLOK) {
-        Bm = q[Q_RHO] * A * Minv.transpose();
-        // the correction stiffens a particle whose kernel support is cut (a free surface,
-        // by up to about 2 normal to it) by the gain kappa, the largest singular value of
-        // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
-        // unstable at 0.3 h / c_L without this, stable at 0.25)
-        const Eigen::Matrix3d K = q[Q_RHO] * Minv;
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-        es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
-        const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
-        if (sqrt_kappa > 1.0) {
-          const double rho = q[Q_RHO];
-          const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
-          const double *v = q + Q_V;
-          const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-          dtmin = std::min(dtmin, q[Q_H] / (cl * sqrt_kappa + vmag));
+  // per chunk of atoms: the smallest time step
+  std::vector<double> dtmin(nthreads, dt_cfl);
+  double *const dtmin_t = dtmin.data();
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
+    double dtl = dtmin_t[tid];
+    for (int i = from; i < to; i++) {
+      const double *q = hq[i];
+      const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
+      double *B = hq[i] + qcol_b;
+      Eigen::Matrix3d M, Minv, Bm;
+      if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, M, Minv)) {
+        if (correct_flag == CORRECT_BONETLOK) {
+          Bm = q[Q_RHO] * A * Minv.transpose();
+          // the correction stiffens a particle whose kernel support is cut (a free surface,
+          // by up to about 2 normal to it) by the gain kappa, the largest singular value of
+          // rho M^-1: its CFL step shrinks by sqrt(kappa) (measured: the free bar's ends go
+          // unstable at 0.3 h / c_L without this, stable at 0.25)
+          const Eigen::Matrix3d K = q[Q_RHO] * Minv;
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+          es.computeDirect(K.transpose() * K, Eigen::EigenvaluesOnly);
+          const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
+          if (sqrt_kappa > 1.0) {
+            const double rho = q[Q_RHO];
+            const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
+            const double *v = q + Q_V;
+            const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            dtl = std::min(dtl, q[Q_H] / (cl * sqrt_kappa + vmag));
+          }
+        } else {
+          // torquefree: B = S M^-T with S = sym(A M^T), i.e. the plain force's B = A less
+          // its torque (B M^T is symmetric); B = A wherever A and M commute (a uniform bulk,
+          // a flat face along the principal axes), so the free surfaces keep the plain
+          // force and its stability
+          const Eigen::Matrix3d AM = A * M.transpose();
+          Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
         }
       } else {
-        // torquefree: B = S M^-T with S = sym(A M^T), i.e. the plain force's B = A less
-        // its torque (B M^T is symmetric); B = A wherever A and M commute (a uniform bulk,
-        // a flat face along the principal axes), so the free surfaces keep the plain
-        // force and its stability
-        const Eigen::Matrix3d AM = A * M.transpose();
-        Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
+        Bm = A;
       }
-    } else {
-      Bm = A;
+      for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) B[3 * r + c] = Bm(r, c);
     }
-    for (int r = 0; r < 3; r++)
-      for (int c = 0; c < 3; c++) B[3 * r + c] = Bm(r, c);
-  }
-  dt_cfl = dtmin;
+    dtmin_t[tid] = dtl;
+  });
+  for (int t = 0; t < nthreads; t++) dt_cfl = std::min(dt_cfl, dtmin[t]);
   // the ghosts' partial sums are with their owners: the pair loop's reverse
   // communication must not add them again
   for (int i = nlocal; i < nall; i++)
@@ -111,9 +116,29 @@ void PairESPHSolid::correction()
   comm->forward_comm(this, 9);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   the correction sums of the whole neighbor list into acc (the serial pass)
+------------------------------------------------------------------------- */
 
-template <int HVAR> void PairESPHSolid::correction_loop()
+void PairESPHSolid::correction_pass()
+{
+  run_correction_loop(0, list->inum, acc);
+}
+
+void PairESPHSolid::run_correction_loop(int iifrom, int iito, double **accr)
+{
+  if (hvar_flag)
+    correction_loop<1>(iifrom, iito, accr);
+  else
+    correction_loop<0>(iifrom, iito, accr);
+}
+
+/* ----------------------------------------------------------------------
+   M_i of the atoms of [iifrom, iito) of the neighbor list and their partners,
+   added to the rows accr (acc itself, or a thread's rows)
+------------------------------------------------------------------------- */
+
+template <int HVAR> void PairESPHSolid::correction_loop(int iifrom, int iito, double **acc)
 {
   double **x = atom->x;
   const double *rmass = state->rmass;
@@ -131,12 +156,11 @@ template <int HVAR> void PairESPHSolid::correction_loop()
   const int contact_on = (nboundary > 0) && (contact != CONTACT_OFF);
   const int solid = (contact == CONTACT_SOLID);
 
-  const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
-  for (int ii = 0; ii < inum; ii++) {
+  for (int ii = iifrom; ii < iito; ii++) {
     const int i = ilist[ii];
     const double mi = rmass[i];
     if (mi == 0.0) continue;

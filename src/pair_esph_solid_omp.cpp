@@ -231,6 +231,46 @@ void PairESPHSolidOMP::pair_pass(int bnd)
   }
 }
 
+/* ----------------------------------------------------------------------
+   the correction sums of gradient bonet/lok (the 9 components of M of the
+   real particles) in threads, on the rows of the pair loop: the same chunks,
+   private rows folded in thread order
+------------------------------------------------------------------------- */
+
+void PairESPHSolidOMP::correction_pass()
+{
+  if (nthreads < 2) {
+    PairESPHSolid::correction_pass();
+    return;
+  }
+  if (rows_stale()) build_rows();
+
+#pragma omp parallel num_threads(nthreads)
+  {
+    const int team = ESPH::team_size();
+    for (int tid = ESPH::thread_id(); tid < nthreads; tid += team) {
+      Thread &t = thr[tid];
+      const int nf = (int) t.foreign.size();
+      for (int e = 0; e < nf; e++)
+        memset(t.priv.data() + (size_t) e * PRIV_STRIDE + A_M, 0, sizeof(double) * 9);
+      run_correction_loop(t.from, t.to, t.acc_rows.data());
+    }
+
+    // every thread's loop is done before any private row is read
+#pragma omp barrier
+    for (int s = 0; s < nthreads; s++) {
+      const Thread &src = thr[s];
+      const int n = (int) src.foreign.size();
+#pragma omp for schedule(static)
+      for (int e = 0; e < n; e++) {
+        double *dst = acc[src.foreign[e]] + A_M;
+        const double *r = src.priv.data() + (size_t) e * PRIV_STRIDE + A_M;
+        for (int k = 0; k < 9; k++) dst[k] += r[k];
+      }
+    }
+  }
+}
+
 /* ---------------------------------------------------------------------- */
 
 double PairESPHSolidOMP::memory_usage()

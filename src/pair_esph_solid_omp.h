@@ -34,6 +34,7 @@ class PairESPHSolidOMP : public PairESPHSolid {
 
  protected:
   void pair_pass(int) override;
+  void correction_pass() override;
 
  private:
   // a thread's private row: its sums of acc (NACC), atom->f (3) and atom_contact (2)
