@@ -326,13 +326,15 @@ void FixESPHIntegrate::initial_integrate_staggered()
   if (igroup == atom->firstgroup) nint = atom->nfirst;
   const double *rmass = state->rmass;
 
-  for (int i = 0; i < nlocal; i++) {
-    if (i < nint && (mask[i] & groupbit) && rmass[i] > 0.0) {
-      const double dtfm = dtf / rmass[i];
-      for (int d = 0; d < 3; d++) v[i][d] += dtfm * f[i][d];
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      if (i < nint && (mask[i] & groupbit) && rmass[i] > 0.0) {
+        const double dtfm = dtf / rmass[i];
+        for (int d = 0; d < 3; d++) v[i][d] += dtfm * f[i][d];
+      }
+      set_pred_from_state(i);
     }
-    set_pred_from_state(i);
-  }
+  });
   pair->pred_valid = 1;
   pair->stagger_rates();
   stagger_commit();
@@ -341,22 +343,24 @@ void FixESPHIntegrate::initial_integrate_staggered()
   double **n = state->n;
   double **xs = pair->xsph_flag ? pair->xsph : nullptr;
   double **bvel = pair->bvel, **bspin = pair->bspin;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(i < nint && (mask[i] & groupbit))) continue;
-    if (rmass[i] > 0.0) {
-      for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
-      if (xs)
-        for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
-    } else {
-      // boundary particle: the velocity and spin interpolated from v^(n+1/2)
-      for (int d = 0; d < 3; d++) {
-        v[i][d] = bvel[i][d];
-        x[i][d] += dtv * v[i][d];
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      if (!(i < nint && (mask[i] & groupbit))) continue;
+      if (rmass[i] > 0.0) {
+        for (int d = 0; d < 3; d++) x[i][d] += dtv * v[i][d];
+        if (xs)
+          for (int d = 0; d < 3; d++) x[i][d] += dtv * xs[i][d];
+      } else {
+        // boundary particle: the velocity and spin interpolated from v^(n+1/2)
+        for (int d = 0; d < 3; d++) {
+          v[i][d] = bvel[i][d];
+          x[i][d] += dtv * v[i][d];
+        }
+        rotate_normal(n[i], bspin[i]);
+        for (int d = 0; d < 3; d++) pred[i][P_V + d] = v[i][d];
       }
-      rotate_normal(n[i], bspin[i]);
-      for (int d = 0; d < 3; d++) pred[i][P_V + d] = v[i][d];
     }
-  }
+  });
 }
 
 /* ----------------------------------------------------------------------
@@ -441,17 +445,19 @@ void FixESPHIntegrate::stagger_commit()
   const double *drho = pair->drho, *de = pair->de;
   const double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
 
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit) || rmass[i] == 0.0) continue;
-    double *p = pred[i];
-    advance_state(i, dtv, 0);
-    p[P_RHO] = rho[i];
-    p[P_H] = h[i];
-    p[P_E] = e[i] + dtv * de[i];
-    for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k];
-    p[P_DIVV] = -drho[i] / rho[i];
-    p[P_ALPHA] = alpha ? alpha[i] : 0.0;
-  }
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      if (!(mask[i] & groupbit) || rmass[i] == 0.0) continue;
+      double *p = pred[i];
+      advance_state(i, dtv, 0);
+      p[P_RHO] = rho[i];
+      p[P_H] = h[i];
+      p[P_E] = e[i] + dtv * de[i];
+      for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k];
+      p[P_DIVV] = -drho[i] / rho[i];
+      p[P_ALPHA] = alpha ? alpha[i] : 0.0;
+    }
+  });
 }
 
 /* ---------------------------------------------------------------------- */
