@@ -157,6 +157,30 @@ void PairESPHSolidOMP::build_rows()
 }
 
 /* ----------------------------------------------------------------------
+   run(thread) for every thread's chunk, in parallel; after all are done,
+   fold(atom, private row) for the private rows of thread 0, 1, ... in turn
+   (the atoms of one thread's rows are distinct: split over the team)
+------------------------------------------------------------------------- */
+
+template <class Run, class Fold> void PairESPHSolidOMP::threaded_rows(Run &&run, Fold &&fold)
+{
+#pragma omp parallel num_threads(nthreads)
+  {
+    const int team = ESPH::team_size();
+    for (int tid = ESPH::thread_id(); tid < nthreads; tid += team) run(thr[tid]);
+
+      // every thread's loop is done before any private row is read
+#pragma omp barrier
+    for (int s = 0; s < nthreads; s++) {
+      const Thread &src = thr[s];
+      const int n = (int) src.foreign.size();
+#pragma omp for schedule(static)
+      for (int e = 0; e < n; e++) fold(src.foreign[e], src.priv.data() + (size_t) e * PRIV_STRIDE);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
    the pair loop in threads, then the private rows folded into the arrays
    (in thread order) and the tallies summed (in thread order)
 ------------------------------------------------------------------------- */
@@ -176,35 +200,22 @@ void PairESPHSolidOMP::pair_pass(int bnd)
   for (auto &t : thr)
     for (auto &kv : t.tally) kv.second = {0.0, 0.0, 0.0};
 
-#pragma omp parallel num_threads(nthreads)
-  {
-    const int team = ESPH::team_size();
-    for (int tid = ESPH::thread_id(); tid < nthreads; tid += team) {
-      Thread &t = thr[tid];
-      const int from = t.from, to = t.to;
-      const int nf = (int) t.foreign.size();
-      for (int e = 0; e < nf; e++) {
-        double *r = t.priv.data() + (size_t) e * PRIV_STRIDE;
-        memset(r, 0, sizeof(double) * ncol);
-        memset(r + PRIV_F, 0, sizeof(double) * (cflag ? 5 : 3));
-      }
-      LoopOut out{from, to, t.acc_rows.data(), t.f_rows.data(), t.c_rows.data(), &t.tally, 0,
-                  0,    0.0};
-      run_pair_loop(bnd, out);
-      t.ncontact = out.ncontact;
-      t.ntouch = out.ntouch;
-      t.fcontact = out.fcontact;
-    }
-
-    // every thread's loop is done before any private row is read
-#pragma omp barrier
-    for (int s = 0; s < nthreads; s++) {
-      const Thread &src = thr[s];
-      const int n = (int) src.foreign.size();
-#pragma omp for schedule(static)
-      for (int e = 0; e < n; e++) {
-        const int k = src.foreign[e];
-        const double *r = src.priv.data() + (size_t) e * PRIV_STRIDE;
+  threaded_rows(
+      [&](Thread &t) {
+        const int nf = (int) t.foreign.size();
+        for (int e = 0; e < nf; e++) {
+          double *r = t.priv.data() + (size_t) e * PRIV_STRIDE;
+          memset(r, 0, sizeof(double) * ncol);
+          memset(r + PRIV_F, 0, sizeof(double) * (cflag ? 5 : 3));
+        }
+        LoopOut out{t.from, t.to, t.acc_rows.data(), t.f_rows.data(), t.c_rows.data(), &t.tally, 0,
+                    0,      0.0};
+        run_pair_loop(bnd, out);
+        t.ncontact = out.ncontact;
+        t.ntouch = out.ntouch;
+        t.fcontact = out.fcontact;
+      },
+      [&](int k, const double *r) {
         combine_acc_row(acc[k], r, 0, ncol, rmass[k] == 0.0);
         f[k][0] += r[PRIV_F];
         f[k][1] += r[PRIV_F + 1];
@@ -213,9 +224,7 @@ void PairESPHSolidOMP::pair_pass(int bnd)
           atom_contact[k][0] += r[PRIV_C];
           atom_contact[k][1] += r[PRIV_C + 1];
         }
-      }
-    }
-  }
+      });
 
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
@@ -245,30 +254,16 @@ void PairESPHSolidOMP::correction_pass()
   }
   if (rows_stale()) build_rows();
 
-#pragma omp parallel num_threads(nthreads)
-  {
-    const int team = ESPH::team_size();
-    for (int tid = ESPH::thread_id(); tid < nthreads; tid += team) {
-      Thread &t = thr[tid];
-      const int nf = (int) t.foreign.size();
-      for (int e = 0; e < nf; e++)
-        memset(t.priv.data() + (size_t) e * PRIV_STRIDE + A_M, 0, sizeof(double) * 9);
-      run_correction_loop(t.from, t.to, t.acc_rows.data());
-    }
-
-    // every thread's loop is done before any private row is read
-#pragma omp barrier
-    for (int s = 0; s < nthreads; s++) {
-      const Thread &src = thr[s];
-      const int n = (int) src.foreign.size();
-#pragma omp for schedule(static)
-      for (int e = 0; e < n; e++) {
-        double *dst = acc[src.foreign[e]] + A_M;
-        const double *r = src.priv.data() + (size_t) e * PRIV_STRIDE + A_M;
-        for (int k = 0; k < 9; k++) dst[k] += r[k];
-      }
-    }
-  }
+  threaded_rows(
+      [&](Thread &t) {
+        const int nf = (int) t.foreign.size();
+        for (int e = 0; e < nf; e++)
+          memset(t.priv.data() + (size_t) e * PRIV_STRIDE + A_M, 0, sizeof(double) * 9);
+        run_correction_loop(t.from, t.to, t.acc_rows.data());
+      },
+      [&](int k, const double *r) {
+        for (int c = A_M; c < A_M + 9; c++) acc[k][c] += r[c];
+      });
 }
 
 /* ---------------------------------------------------------------------- */

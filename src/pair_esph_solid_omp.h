@@ -62,6 +62,7 @@ class PairESPHSolidOMP : public PairESPHSolid {
   const double *rows_acc, *rows_f, *rows_catom;
   bool rows_stale() const;
   void build_rows();
+  template <class Run, class Fold> void threaded_rows(Run &&, Fold &&);
 };
 
 }    // namespace LAMMPS_NS
