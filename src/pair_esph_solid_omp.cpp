@@ -109,7 +109,8 @@ void PairESPHSolidOMP::build_rows()
     while (ii < inum && (sum < target || t == nthreads - 1)) sum += work[ii++];
     thr[t].to = ii;
   }
-  owner.assign(nall, -1);
+  // the thread whose chunk holds the atom, -1 for none
+  std::vector<int> owner(nall, -1);
   ESPH::for_chunks(nthreads, inum, [&](int, int, int tid) {
     for (int ii = thr[tid].from; ii < thr[tid].to; ii++) owner[ilist[ii]] = tid;
   });
@@ -271,7 +272,6 @@ void PairESPHSolidOMP::correction_pass()
 double PairESPHSolidOMP::memory_usage()
 {
   double bytes = PairESPHSolid::memory_usage();
-  bytes += (double) owner.capacity() * sizeof(int);
   for (const auto &t : thr) {
     bytes += (double) (t.acc_rows.capacity() + t.f_rows.capacity() + t.c_rows.capacity()) *
         sizeof(double *);

@@ -55,7 +55,6 @@ class PairESPHSolidOMP : public PairESPHSolid {
     double fcontact;
   };
   std::vector<Thread> thr;
-  std::vector<int> owner;    // thread whose chunk holds the atom, -1 for none
   // what the rows were built for: neighbour list build, atom counts, array addresses
   bigint rows_ncalls;
   int rows_nall, rows_inum, rows_nthreads;
