@@ -30,7 +30,9 @@
 // particle has another body's surface within its kernel.
 //
 // Common normal: nc ~ w_i n_i - w_j n_j (coherence-weighted, see contact_normal), pointing
-// from i into the other body.
+// from i into the other body; under the solid rule by default (contact/normal cone) turned
+// into the direction common to both surfaces' cones of normals (contact_normal_cone), so
+// that an edge meeting a face pushes along the face's normal.
 // Rules:
 //   PAPER : interact iff the particles approach along nc, (vij.nc)(xij.nc) < 0 (eq. 31).
 //   SOLID : (default) the cross-body coupling is weighted by contact_pair_weight(), the
@@ -44,6 +46,8 @@
 #ifndef LMP_ESPH_CONTACT_H
 #define LMP_ESPH_CONTACT_H
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 namespace ESPH {
@@ -75,6 +79,77 @@ inline void contact_normal(const double *ni, const double *nj, const double *xij
   nc[0] = a0 * inv;
   nc[1] = a1 * inv;
   nc[2] = a2 * inv;
+}
+
+/* contact/normal cone (the default under the solid rule): the common normal as the
+   direction that both surfaces admit. The cone of a real particle's surface is the second
+   moment of its own body's boundary normals n_k around it, S = sum_k W_ik n_k n_k^T /
+   sum_k W_ik (Voigt xx yy zz xy xz yz, trace 1), with every eigenvector counted fully
+   whose eigenvalue is at least CONE_R0 of the largest, a smaller one in proportion:
+     C = sum_a min(1, lambda_a / (CONE_R0 lambda_max)) v_a v_a^T.
+   A flat face gives one direction (C = n n^T), an edge the plane of its two faces'
+   normals, a corner all directions. CONE_R0 = sin^2(10 deg): normals that differ by more
+   than about 10 degrees within the kernel make an edge; a face's scatter about its mean
+   (a fitted staircase: ~1 degree) and the curvature of a body more than ~5 h in radius do
+   not. */
+
+static constexpr double CONE_R0 = 0.030153689607045803;    // sin^2(10 degrees)
+
+inline void contact_cone(const double *s, double *cone)
+{
+  Eigen::Matrix3d S;
+  S << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+  es.computeDirect(S);
+  const Eigen::Vector3d lam = es.eigenvalues();    // increasing
+  const Eigen::Matrix3d &V = es.eigenvectors();
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  const double lmax = lam(2);
+  if (lmax > 0.0)
+    for (int a = 0; a < 3; a++) {
+      const double g = std::min(1.0, std::max(0.0, lam(a) / (CONE_R0 * lmax)));
+      if (g > 0.0) C += g * V.col(a) * V.col(a).transpose();
+    }
+  cone[0] = C(0, 0);
+  cone[1] = C(1, 1);
+  cone[2] = C(2, 2);
+  cone[3] = C(0, 1);
+  cone[4] = C(0, 2);
+  cone[5] = C(1, 2);
+}
+
+/* the common normal of a cross-body pair from the cones of both surfaces: the limit
+   direction of M^k m, M = C_i + C_j + CONE_TIE m m^T, started at the mean normal m of
+   contact_normal() (nc, in and out), which also breaks ties. An edge (a plane cone)
+   against a face (one direction, in that plane) gives the face's normal, which the mean
+   normal tilts towards the edge; two crossing edges the normal of both; two faces, or two
+   curved surfaces, about their mean. M^k m is a continuous function of the cones (k =
+   2^CONE_SQUARINGS, by repeated squaring with the trace scaled to 1): no eigenvector is
+   chosen, nothing jumps when two directions compete. */
+
+static constexpr double CONE_TIE = 0.05;
+static constexpr int CONE_SQUARINGS = 5;
+
+inline void contact_normal_cone(const double *ci, const double *cj, double *nc)
+{
+  Eigen::Matrix3d M;
+  M << ci[0] + cj[0], ci[3] + cj[3], ci[4] + cj[4], ci[3] + cj[3], ci[1] + cj[1],
+      ci[5] + cj[5], ci[4] + cj[4], ci[5] + cj[5], ci[2] + cj[2];
+  const Eigen::Vector3d m(nc[0], nc[1], nc[2]);
+  M += CONE_TIE * m * m.transpose();
+  for (int k = 0; k < CONE_SQUARINGS; k++) {
+    M = M * M;
+    const double tr = M.trace();
+    if (!(tr > 0.0)) return;
+    M /= tr;
+  }
+  Eigen::Vector3d r = M * m;
+  const double len = r.norm();
+  if (!(len > 1.0e-12)) return;
+  r /= len;
+  nc[0] = r(0);
+  nc[1] = r(1);
+  nc[2] = r(2);
 }
 
 // no other body's surface in reach

@@ -57,7 +57,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), qcol_b(-1), qcol_d(-1), recon_keep(0), nboundary(0), atom_contact_flag(0),
+    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), recon_keep(0), nboundary(0), atom_contact_flag(0),
     atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
@@ -107,6 +107,7 @@ void PairESPHSolid::set_defaults()
   contact = CONTACT_SOLID;
   gaptol = 0.05;
   onset = 10;
+  cone_flag = 1;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -323,6 +324,17 @@ void PairESPHSolid::settings(int narg, char **arg)
       onset = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
       if (onset < 0)
         error->all(FLERR, iarg + 2, "Pair esph/solid onset must be >= 0 steps, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "contact/normal") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid contact/normal", error);
+      if (strcmp(arg[iarg + 1], "cone") == 0)
+        cone_flag = 1;
+      else if (strcmp(arg[iarg + 1], "mean") == 0)
+        cone_flag = 0;
+      else
+        error->all(FLERR, iarg + 2, "Pair esph/solid contact/normal must be cone or mean, got {}",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "friction") == 0) {
@@ -635,7 +647,9 @@ void PairESPHSolid::grow_work()
   qcol_b = (correct_flag >= CORRECT_BONETLOK) ? cols0 : -1;
   const int cols1 = cols0 + (qcol_b >= 0 ? 9 : 0);
   qcol_d = recon_flag ? cols1 : -1;
-  const int cols = cols1 + (qcol_d >= 0 ? 6 : 0);
+  const int cols2 = cols1 + (qcol_d >= 0 ? 6 : 0);
+  qcol_n = (cone_flag && contact == CONTACT_SOLID) ? cols2 : -1;
+  const int cols = cols2 + (qcol_n >= 0 ? 6 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
     hq_cols = cols;
@@ -691,6 +705,8 @@ void PairESPHSolid::hoist()
   // unless it re-evaluates the last computation (a continued run)
   double **drec = recon_flag ? state->drec : nullptr;
   const int recon_shift = drec && !recon_keep;
+  const int qcn = qcol_n;
+  double **const pall = fix_int->pred;
   recon_keep = 0;
 
   // per chunk of atoms: the smallest time step, the first atom whose h is too large
@@ -720,6 +736,8 @@ void PairESPHSolid::hoist()
       q[Q_ENG] = state->eng[i];
       if (drec)
         for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
+      if (qcn >= 0)
+        for (int k = 0; k < 6; k++) q[qcn + k] = pall[i][FixESPHIntegrate::P_CONE + k];
       if (rmass[i] > 0.0) {
         const int itype = type[i];
         const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
@@ -808,14 +826,15 @@ void PairESPHSolid::stagger_save()
   const int nlocal = atom->nlocal;
   stagger_f.resize(3 * (size_t) nall);
   if (nall > 0) memcpy(stagger_f.data(), &atom->f[0][0], sizeof(double) * 3 * nall);
-  stagger_geom.resize(7 * (size_t) nlocal);
+  stagger_geom.resize(NGEOM * (size_t) nlocal);
   for (int i = 0; i < nlocal; i++) {
-    double *g = &stagger_geom[7 * (size_t) i];
+    double *g = &stagger_geom[NGEOM * (size_t) i];
     for (int d = 0; d < 3; d++) g[d] = state->n[i][d];
     g[3] = state->gap[i];
     g[4] = state->gapv[i];
     g[5] = state->eng[i];
     g[6] = state->depth[i];
+    for (int k = 0; k < 6; k++) g[7 + k] = fix_int->pred[i][FixESPHIntegrate::P_CONE + k];
   }
   stagger_flags[0] = normals_valid;
   stagger_flags[1] = dt_keep;
@@ -827,12 +846,13 @@ void PairESPHSolid::stagger_restore()
   const int nlocal = atom->nlocal;
   if (nall > 0) memcpy(&atom->f[0][0], stagger_f.data(), sizeof(double) * 3 * nall);
   for (int i = 0; i < nlocal; i++) {
-    const double *g = &stagger_geom[7 * (size_t) i];
+    const double *g = &stagger_geom[NGEOM * (size_t) i];
     for (int d = 0; d < 3; d++) state->n[i][d] = g[d];
     state->gap[i] = g[3];
     state->gapv[i] = g[4];
     state->eng[i] = g[5];
     state->depth[i] = g[6];
+    for (int k = 0; k < 6; k++) fix_int->pred[i][FixESPHIntegrate::P_CONE + k] = g[7 + k];
   }
   normals_valid = stagger_flags[0];
   dt_keep = stagger_flags[1];
@@ -854,7 +874,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   // forward communication of what neighbours need, in one message
   comm_bnd = bnd;
   nforward =
-      12 + (bnd ? 6 : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
+      12 + (bnd ? 6 + (qcol_n >= 0 ? 6 : 0) : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;
@@ -1120,6 +1140,8 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       for (int k = Q_N; k <= Q_GAP; k++) buf[m++] = q[k];
       buf[m++] = q[Q_GAPV];
       buf[m++] = q[Q_ENG];
+      if (qcol_n >= 0)
+        for (int k = 0; k < 6; k++) buf[m++] = q[qcol_n + k];
     }
     if (heat_flag) {
       buf[m++] = q[Q_E];
@@ -1169,6 +1191,8 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       for (int k = Q_N; k <= Q_GAP; k++) q[k] = buf[m++];
       q[Q_GAPV] = buf[m++];
       q[Q_ENG] = buf[m++];
+      if (qcol_n >= 0)
+        for (int k = 0; k < 6; k++) q[qcol_n + k] = buf[m++];
     }
     if (heat_flag) {
       q[Q_E] = buf[m++];
@@ -1201,6 +1225,7 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) buf[m++] = a[k];
       for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
+      for (int k = A_NN; k < A_NN + 6; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_CORR) {
       for (int k = A_M; k < A_M + 9; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_GAPS) {
@@ -1231,8 +1256,10 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
     int k0 = 0, k1 = nreverse;
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) a[k] += buf[m++];
-      k0 = A_GW;
-      k1 = GAP_END;
+      combine_acc_row(a, buf + m, A_GW, GAP_END, rmass[j] == 0.0);
+      m += GAP_END - A_GW;
+      k0 = A_NN;
+      k1 = A_NN + 6;
     } else if (comm_stage == COMM_GAPS) {
       k0 = A_GW;
       k1 = GAP_END;

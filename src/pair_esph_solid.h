@@ -52,10 +52,10 @@ class PairESPHSolid : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
-  bool geometry_used(int, double *) const;
+  bool geometry_used(int, double *, double *) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
-  static constexpr int NACC = 32;
+  static constexpr int NACC = 38;
   // hoisted per-particle quantities sent to ghosts every step
   static constexpr int NHQ = 20;
   // more hoisted quantities per atom with the artificial stress (R and its flag)
@@ -86,6 +86,7 @@ class PairESPHSolid : public Pair {
   int contact;           // ESPH::ContactRule
   double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
   int onset;             // steps over which a newly touching particle's coupling builds up
+  int cone_flag;         // contact/normal: 1 cone (the common normal from both surfaces' cones), 0 mean
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon
@@ -119,6 +120,7 @@ class PairESPHSolid : public Pair {
                      // viscosity switch (its alpha_i), + 9 with the gradient correction (B_i),
                      // + 6 with visc/recon (D_i)
   int qcol_b;        // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
+  int qcol_n;        // contact/normal cone: first column of the cone C_i (Voigt), or -1
   int qcol_d;        // visc/recon: first column of the strain rate D_i (Voigt) it uses, or -1
   int recon_keep;    // visc/recon: the next computation re-evaluates the last one: keep
                      // the strain rates that one used
@@ -133,7 +135,8 @@ class PairESPHSolid : public Pair {
   double dt_step;       // time step of the step of this force computation (gap forecast)
   int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
   // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
-  std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth
+  std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth, cone
+  static constexpr int NGEOM = 13;
   int stagger_flags[2];
   void stagger_save();
   void stagger_restore();

@@ -25,6 +25,7 @@
 #include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
+#include "fix_esph_integrate.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -62,6 +63,17 @@ void PairESPHSolid::store_normal(int i)
   } else {
     state->gap[i] = GAP_NONE;
     state->gapv[i] = 0.0;
+  }
+  if (qcol_n >= 0) {
+    double *cn = fix_int->pred[i] + FixESPHIntegrate::P_CONE;
+    if (a[A_WSUM] > 0.0 && state->gap[i] < GAP_NONE) {
+      const double inv = 1.0 / a[A_WSUM];
+      const double s[6] = {a[A_NN] * inv,     a[A_NN + 1] * inv, a[A_NN + 2] * inv,
+                           a[A_NN + 3] * inv, a[A_NN + 4] * inv, a[A_NN + 5] * inv};
+      contact_cone(s, cn);
+    } else {
+      for (int k = 0; k < 6; k++) cn[k] = 0.0;
+    }
   }
   // engagement for the next computation, from the gap it will see; the stored value is
   // the one this computation used until now (hoisted)
@@ -125,6 +137,7 @@ void PairESPHSolid::compute_normals()
   comm->forward_comm(this, 7);
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
+    for (int k = A_NN; k < A_NN + 6; k++) acc[i][k] = 0.0;
     for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
   }
 
@@ -154,11 +167,12 @@ void PairESPHSolid::compute_normals()
       if (p >= nlocal && !newton_pair && p != i) continue;
       const double sgn = (k == i) ? 1.0 : -1.0;
       add_normal_sums(acc[p], w, sgn, dx, hq[k] + Q_N);
+      if (qcol_n >= 0) add_cone_sums(acc[p], w, hq[k] + Q_N);
     }
   }
   if (newton_pair) {
     comm_stage = COMM_NORMALS;
-    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW));
+    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW) + 6);
   }
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) {
@@ -212,12 +226,12 @@ void PairESPHSolid::compute_normals()
 }
 
 /* ----------------------------------------------------------------------
-   normal, surface gap, gap rate and engagement (6 values) of owned atom i that the
-   last force computation used (its hoisted copy; valid until the next
+   normal, surface gap, gap rate and engagement (6 values), and the normal cone (6, zero
+   without contact/normal cone) of owned atom i that the last force computation used (its hoisted copy; valid until the next
    computation); false before any computation
 ------------------------------------------------------------------------- */
 
-bool PairESPHSolid::geometry_used(int i, double *out) const
+bool PairESPHSolid::geometry_used(int i, double *out, double *cone) const
 {
   if (!hq) return false;
   const double *q = hq[i];
@@ -225,6 +239,7 @@ bool PairESPHSolid::geometry_used(int i, double *out) const
   out[3] = q[Q_GAP];
   out[4] = q[Q_GAPV];
   out[5] = q[Q_ENG];
+  for (int k = 0; k < 6; k++) cone[k] = (qcol_n >= 0) ? q[qcol_n + k] : 0.0;
   return true;
 }
 

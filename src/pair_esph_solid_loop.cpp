@@ -84,6 +84,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   // visc/recon: the limiter, and the column of the strain rates it reconstructs with
   const int recon = VEXT ? recon_flag : 0;
   const int qd = qcol_d;
+  const int qcn = qcol_n;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -180,6 +181,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         if (p < nlocal || newton_pair || p == i) {
           add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
           if (solid) add_gap_sums(acc[p], w, qk, dt);
+          if (qcn >= 0) add_cone_sums(acc[p], w, qk + Q_N);
         }
         continue;
       }
@@ -217,6 +219,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
       double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
+        if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
         vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
         // the slip velocity (of i against j) for friction

@@ -47,6 +47,9 @@ static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
 // end of the gap slots, communicated together: A_GW..A_GV of real particles (slot 31
 // unused), B_GAP..B_GAP+3 of boundary particles
 static constexpr int GAP_END = 32;
+// 32..37: sum_k W_ik n_k (x) n_k over own boundary particles (Voigt), the cone of the
+// surface (contact normal cone)
+static constexpr int A_NN = 32;
 // length that regularises the alignment score of two boundary particles, and below which
 // an open gap counts as touching (round-off of coinciding faces), in h0
 static constexpr double GAP_EPS = 1.0e-6;
@@ -147,6 +150,20 @@ inline void add_normal_sums(double *ap, double w, double sgn, const double *dx, 
   ap[A_NSUM + 2] += w * nk[2];
   ap[A_DSUM] += w * (sgn * dx[0] * nk[0] + sgn * dx[1] * nk[1] + sgn * dx[2] * nk[2]);
   ap[A_WSUM] += w;
+}
+
+/* ----------------------------------------------------------------------
+   second moment of the boundary normals around real particle p (the cone)
+------------------------------------------------------------------------- */
+
+inline void add_cone_sums(double *ap, double w, const double *nk)
+{
+  ap[A_NN] += w * nk[0] * nk[0];
+  ap[A_NN + 1] += w * nk[1] * nk[1];
+  ap[A_NN + 2] += w * nk[2] * nk[2];
+  ap[A_NN + 3] += w * nk[0] * nk[1];
+  ap[A_NN + 4] += w * nk[0] * nk[2];
+  ap[A_NN + 5] += w * nk[1] * nk[2];
 }
 
 /* ----------------------------------------------------------------------
