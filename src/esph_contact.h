@@ -99,8 +99,9 @@ inline void contact_cone(const double *s, double *cone)
 {
   Eigen::Matrix3d S;
   S << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-  es.computeDirect(S);
+  // the iterative solver: backward stable also for close eigenvalues (the closed form of
+  // computeDirect() loses digits there, and decompositions would differ beyond round-off)
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(S);
   const Eigen::Vector3d lam = es.eigenvalues();    // increasing
   const Eigen::Matrix3d &V = es.eigenvectors();
   Eigen::Matrix3d C = Eigen::Matrix3d::Zero();

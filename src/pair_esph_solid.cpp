@@ -107,7 +107,7 @@ void PairESPHSolid::set_defaults()
   contact = CONTACT_SOLID;
   gaptol = 0.05;
   onset = 10;
-  cone_flag = 1;
+  cone_flag = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -881,7 +881,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
   comm->forward_comm(this, nforward);
 
   // without boundary particles or gradient correction only G and the heating terms
-  nreverse = (bnd || correct_flag || xsph_flag) ? NACC : 11;
+  // (the cone sums, the last 6 slots, only with contact/normal cone)
+  nreverse = (bnd || correct_flag || xsph_flag) ? (qcol_n >= 0 ? NACC : A_NN) : 11;
   ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
     for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
   });
@@ -1225,7 +1226,8 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     if (comm_stage == COMM_NORMALS) {
       for (int k = A_NSUM; k <= A_WSUM; k++) buf[m++] = a[k];
       for (int k = A_GW; k < GAP_END; k++) buf[m++] = a[k];
-      for (int k = A_NN; k < A_NN + 6; k++) buf[m++] = a[k];
+      if (qcol_n >= 0)
+        for (int k = A_NN; k < A_NN + 6; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_CORR) {
       for (int k = A_M; k < A_M + 9; k++) buf[m++] = a[k];
     } else if (comm_stage == COMM_GAPS) {
@@ -1259,7 +1261,7 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
       combine_acc_row(a, buf + m, A_GW, GAP_END, rmass[j] == 0.0);
       m += GAP_END - A_GW;
       k0 = A_NN;
-      k1 = A_NN + 6;
+      k1 = (qcol_n >= 0) ? A_NN + 6 : A_NN;
     } else if (comm_stage == COMM_GAPS) {
       k0 = A_GW;
       k1 = GAP_END;

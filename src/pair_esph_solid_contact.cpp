@@ -172,7 +172,7 @@ void PairESPHSolid::compute_normals()
   }
   if (newton_pair) {
     comm_stage = COMM_NORMALS;
-    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW) + 6);
+    comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW) + (qcol_n >= 0 ? 6 : 0));
   }
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) {

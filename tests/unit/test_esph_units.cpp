@@ -331,6 +331,148 @@ TEST(Contact, NormalGapWeight)
   EXPECT_NEAR(nc[0], 1.0 / sqrt(1.09), 1e-15);
 }
 
+// second moment (Voigt) of a set of unit normals with weights
+static void second_moment(const double (*n)[3], const double *w, int k, double *s)
+{
+  double sw = 0.0;
+  for (int a = 0; a < 6; a++) s[a] = 0.0;
+  for (int q = 0; q < k; q++) {
+    const double *v = n[q];
+    s[0] += w[q] * v[0] * v[0];
+    s[1] += w[q] * v[1] * v[1];
+    s[2] += w[q] * v[2] * v[2];
+    s[3] += w[q] * v[0] * v[1];
+    s[4] += w[q] * v[0] * v[2];
+    s[5] += w[q] * v[1] * v[2];
+    sw += w[q];
+  }
+  for (int a = 0; a < 6; a++) s[a] /= sw;
+}
+
+// contact/normal cone: the cone of a face is its normal, of an edge the plane of its faces'
+// normals; an edge against a face gives the face's normal exactly (the mean normal is
+// tilted towards the edge), in any orientation; two faces or two alike curved surfaces
+// give the mean normal's direction; crossing edges the normal of both edges
+TEST(Contact, NormalCone)
+{
+  const double t = PI / 6.0;
+  // block face, outward normal f; rod rim: end face (1,0,0) and side (0,1,0), 70 / 30 %
+  const double f[3] = {-cos(t), -sin(t), 0.0};
+  const double face[1][3] = {{f[0], f[1], f[2]}}, w1[1] = {1.0};
+  const double rim[2][3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}}, w2[2] = {0.7, 0.3};
+  double sf[6], sr[6], cf[6], cr[6];
+  second_moment(face, w1, 1, sf);
+  second_moment(rim, w2, 2, sr);
+  contact_cone(sf, cf);
+  contact_cone(sr, cr);
+  // face: f f^T
+  EXPECT_NEAR(cf[0], f[0] * f[0], 1e-14);
+  EXPECT_NEAR(cf[3], f[0] * f[1], 1e-14);
+  EXPECT_NEAR(cf[2], 0.0, 1e-14);
+  // edge: both directions in full (0.3 of 0.7 is above CONE_R0): the xy projector
+  EXPECT_NEAR(cr[0], 1.0, 1e-14);
+  EXPECT_NEAR(cr[1], 1.0, 1e-14);
+  EXPECT_NEAR(cr[2], 0.0, 1e-14);
+  EXPECT_NEAR(cr[3], 0.0, 1e-14);
+  // the rim particle's mean normal (coherence-weighted) and the face's: common normal from
+  // the rim (i) into the block is -f; the mean rule tilts it by degrees, the cone rule not
+  const double ni[3] = {0.7, 0.3, 0.0}, nj[3] = {f[0], f[1], f[2]}, xij[3] = {-0.5, 0.2, 0.0};
+  double nc[3];
+  contact_normal(ni, nj, xij, nc);
+  const double tilt_mean = acos(-(nc[0] * f[0] + nc[1] * f[1]));
+  EXPECT_GT(tilt_mean, 0.05);
+  contact_normal_cone(cr, cf, nc);
+  EXPECT_NEAR(-(nc[0] * f[0] + nc[1] * f[1] + nc[2] * f[2]), 1.0, 1e-12);
+  // the same scene rotated by 40 degrees about (1,2,3): the rotated answer
+  const double ax[3] = {1.0 / sqrt(14.0), 2.0 / sqrt(14.0), 3.0 / sqrt(14.0)};
+  const double th = 40.0 * PI / 180.0, c = cos(th), s = sin(th);
+  auto rot = [&](const double *v, double *r) {
+    const double kv = ax[0] * v[0] + ax[1] * v[1] + ax[2] * v[2];
+    const double kx[3] = {ax[1] * v[2] - ax[2] * v[1], ax[2] * v[0] - ax[0] * v[2],
+                          ax[0] * v[1] - ax[1] * v[0]};
+    for (int d = 0; d < 3; d++) r[d] = v[d] * c + kx[d] * s + ax[d] * kv * (1.0 - c);
+  };
+  double rface[1][3], rrim[2][3], rni[3], rnj[3], rx[3], rf[3];
+  rot(face[0], rface[0]);
+  rot(rim[0], rrim[0]);
+  rot(rim[1], rrim[1]);
+  rot(ni, rni);
+  rot(nj, rnj);
+  rot(xij, rx);
+  rot(f, rf);
+  second_moment(rface, w1, 1, sf);
+  second_moment(rrim, w2, 2, sr);
+  contact_cone(sf, cf);
+  contact_cone(sr, cr);
+  contact_normal(rni, rnj, rx, nc);
+  contact_normal_cone(cr, cf, nc);
+  for (int d = 0; d < 3; d++) EXPECT_NEAR(nc[d], -rf[d], 1e-12);
+
+  // two opposite flat faces: their normal
+  const double fa[1][3] = {{1.0, 0.0, 0.0}};
+  double sa[6], ca[6];
+  second_moment(fa, w1, 1, sa);
+  contact_cone(sa, ca);
+  const double ea[3] = {1.0, 0.0, 0.0}, eb[3] = {-1.0, 0.0, 0.0}, xab[3] = {-1.0, 0.3, 0.0};
+  contact_normal(ea, eb, xab, nc);
+  contact_normal_cone(ca, ca, nc);
+  EXPECT_NEAR(nc[0], 1.0, 1e-14);
+  EXPECT_NEAR(nc[1], 0.0, 1e-14);
+
+  // two alike curved patches (normals within 5 degrees: below the edge threshold), mirror
+  // images about the x axis: the axis, as the mean rule gives
+  const double a5 = 5.0 * PI / 180.0;
+  const double ca5 = cos(a5), sa5 = sin(a5);
+  const double pi_[3][3] = {{1, 0, 0}, {ca5, sa5, 0}, {ca5, -sa5, 0}};
+  const double pj_[3][3] = {{-1, 0, 0}, {-ca5, sa5, 0}, {-ca5, -sa5, 0}};
+  const double w3[3] = {0.5, 0.3, 0.2};
+  double si[6], sj[6], ci[6], cj[6];
+  second_moment(pi_, w3, 3, si);
+  second_moment(pj_, w3, 3, sj);
+  contact_cone(si, ci);
+  contact_cone(sj, cj);
+  const double ni2[3] = {0.5 + 0.5 * ca5, 0.1 * sa5, 0.0}, nj2[3] = {-(0.5 + 0.5 * ca5), 0.1 * sa5, 0.0};
+  contact_normal(ni2, nj2, xab, nc);
+  contact_normal_cone(ci, cj, nc);
+  EXPECT_NEAR(nc[0], 1.0, 1e-14);
+  EXPECT_NEAR(nc[1], 0.0, 1e-14);
+
+  // crossing edges: x-y edge plane (normals (1,0,0), (0,1,0)) against the plane of (1,0,0)
+  // and (0,0,1): their common direction x, from a mean normal 20 degrees off to within the
+  // mean normal's vote CONE_TIE: tilt about CONE_TIE sin(20) cos(20) = 0.016 rad
+  const double e2[2][3] = {{-1.0, 0.0, 0.0}, {0.0, 0.0, -1.0}}, w5[2] = {0.5, 0.5};
+  double s2[6], c2[6];
+  second_moment(e2, w5, 2, s2);
+  contact_cone(s2, c2);
+  second_moment(rim, w5, 2, sr);
+  contact_cone(sr, cr);
+  nc[0] = cos(0.35);
+  nc[1] = sin(0.35);
+  nc[2] = 0.0;
+  contact_normal_cone(cr, c2, nc);
+  EXPECT_LT(atan2(nc[1], nc[0]), 0.02);
+  EXPECT_GT(atan2(nc[1], nc[0]), 0.0);
+  EXPECT_NEAR(nc[2], 0.0, 1e-14);
+
+  // continuity: a small change of the cone moves the normal a little (no eigenvector jump)
+  double sr2[6], cr2[6], n1[3], n2[3];
+  const double w6[2] = {0.7, 0.3 + 1e-9};
+  second_moment(rim, w2, 2, sr);
+  second_moment(rim, w6, 2, sr2);
+  contact_cone(sr, cr);
+  contact_cone(sr2, cr2);
+  second_moment(face, w1, 1, sf);
+  contact_cone(sf, cf);
+  for (double *n : {n1, n2}) {
+    n[0] = 0.9;
+    n[1] = 0.43588989435406733;
+    n[2] = 0.0;
+  }
+  contact_normal_cone(cr, cf, n1);
+  contact_normal_cone(cr2, cf, n2);
+  EXPECT_LT(fabs(n1[0] - n2[0]) + fabs(n1[1] - n2[1]), 1e-8);
+}
+
 // radial return: a deviator beyond the von Mises surface is scaled back onto it, one inside
 // is untouched, Y = 0 means elastic
 TEST(Strength, RadialReturn)
