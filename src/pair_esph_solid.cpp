@@ -384,6 +384,11 @@ void PairESPHSolid::settings(int narg, char **arg)
                    "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "
                    "approaching pairs interact) then gains energy at every switch (+67 % in "
                    "the 1D rod impact); use contact solid or a visc alpha > 0");
+  if (cone_flag && contact != CONTACT_SOLID && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid contact/normal cone applies to contact solid only; contact "
+                   "{} uses no common normal of cones: drop contact/normal or use contact solid",
+                   contact == CONTACT_PAPER ? "paper" : "off");
   cut_global = KERNEL_SUPPORT * h0 * hmax;
 }
 

@@ -8,6 +8,8 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   bonetlok the same with gradient bonet/lok (the CFL step shrinks at the free surfaces)
   staggered the same with fix esph/integrate scheme staggered and visc 0 1 (no linear term)
   recon    the same with pair_style esph/solid visc/recon vanleer (strain rates carried over)
+  cone     the same with contact/normal cone (the normal cones carried over), and with the
+           staggered scheme as well (conestag)
   plastic  the same with hardening plasticity, the artificial stress and XSPH, fixed step
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
@@ -59,6 +61,10 @@ scenes["bonetlok"] = block_scene("cfl 0.3", "gradient bonet/lok") + ({},)
 scenes["staggered"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1") + ({},)
 # the reconstructed viscosity: strain rates carried from one computation to the next
 scenes["recon"] = block_scene("cfl 0.3", "visc/recon vanleer") + ({},)
+# the cone rule of the contact normal: cones carried from one computation to the next
+# (fix esph/integrate's per-atom prediction), also through the staggered scheme's rate pass
+scenes["cone"] = block_scene("cfl 0.3", "contact/normal cone") + ({},)
+scenes["conestag"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1 contact/normal cone") + ({},)
 scenes["plastic"] = block_scene(
     "", "artstress 0.3 4 1e-4 xsph 0.5", "yield 2e8 hardening 1e9",
     "compute epa all property/atom d_esph_epsp\ncompute ep all reduce max c_epa", "c_ep") + ({},)
@@ -197,7 +203,8 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "staggered", "recon", "plastic", "rod", "slabs"):
+for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "plastic", "rod",
+              "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)

@@ -112,6 +112,11 @@ st = dict(rod, int_extra="scheme staggered")
 st0 = et.production_thermo(et.run(a, ROD, st, log="log.st.t0"))
 compare("rod, scheme staggered: 2 threads vs none", st0,
         et.production_thermo(et.run(a, ROD, st, log="log.st.t2", flags=omp(2))))
+cone = {"dx": 0.25, "fit": 16, "smooth": 1.0, "normal": "cone"}
+OBL = "oblique_rod/in.oblique_rod"
+cn0 = et.production_thermo(et.run(a, OBL, cone, log="log.cone.t0"))
+compare("oblique rod, contact/normal cone: 2 threads vs none", cn0,
+        et.production_thermo(et.run(a, OBL, cone, log="log.cone.t2", flags=omp(2))))
 
 # ---- three bodies: compute esph/contact per interface
 CR = "newton_cradle/in.newton_cradle"
