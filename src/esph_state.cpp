@@ -84,10 +84,18 @@ void ESPHState::ensure_recon(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::ensure_cone(LAMMPS *lmp)
+{
+  if (internal_fix_exists(lmp, FIX_ID_CONE, "esph_cone")) return;
+  lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone 12", FIX_ID_CONE));
+}
+
+/* ---------------------------------------------------------------------- */
+
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
     gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
-    drec(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1)
+    drec(nullptr), cone(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1), icone(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -132,4 +140,6 @@ void ESPHState::fetch()
   alpha = (ialpha >= 0) ? atom->dvector[ialpha] : nullptr;
   idrec = atom->find_custom("esph_drec", flag, cols);
   drec = (idrec >= 0) ? atom->darray[idrec] : nullptr;
+  icone = atom->find_custom("esph_cone", flag, cols);
+  cone = (icone >= 0) ? atom->darray[icone] : nullptr;
 }

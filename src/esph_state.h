@@ -33,6 +33,9 @@
 //   d2_esph_drec[12] strain rates of the reconstructed viscosity (fix ESPH_RECON, only with
 //                  pair_style esph/solid visc/recon): 0..5 D = sym(L) of the last force
 //                  computation (Voigt), 6..11 the D that computation used
+//   d2_esph_cone[12] cone of a real particle's boundary normals (fix ESPH_CONE, only with
+//                  pair_style esph/solid contact/normal cone): 0..5 found by the last force
+//                  computation (Voigt), 6..11 the cone that computation used
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -51,6 +54,7 @@ class ESPHState {
   static constexpr const char *FIX_ID_PLASTIC = "ESPH_PLASTIC";
   static constexpr const char *FIX_ID_VISC = "ESPH_VISC";
   static constexpr const char *FIX_ID_RECON = "ESPH_RECON";
+  static constexpr const char *FIX_ID_CONE = "ESPH_CONE";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
@@ -63,6 +67,9 @@ class ESPHState {
   // create the reconstruction fix (d2_esph_drec) if it does not exist yet: only scenes
   // with visc/recon carry it
   static void ensure_recon(LAMMPS *lmp);
+  // create the normal-cone fix (d2_esph_cone) if it does not exist yet: only scenes with
+  // pair_style esph/solid contact/normal cone carry it
+  static void ensure_cone(LAMMPS *lmp);
 
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
@@ -72,11 +79,12 @@ class ESPHState {
   double *epsp;     // equivalent plastic strain, nullptr without plasticity
   double *alpha;    // switched viscosity coefficient, nullptr without visc/switch
   double **drec;    // strain rates of visc/recon (12 per atom), nullptr without it
+  double **cone;    // normal cones of contact/normal cone (12 per atom), nullptr without it
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, icone;
 };
 
 }    // namespace LAMMPS_NS

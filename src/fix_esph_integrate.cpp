@@ -51,8 +51,8 @@ static inline double advance_alpha(double a, double rate, double dt, double amin
 {
   return MIN(MAX(a + dt * rate, amin), amax);
 }
-// (changed with the per-atom prediction's layout: P_CONE and P_CONE_USED added)
-static constexpr double RESTART_LAYOUT = 2026120401.0;
+// (changed with the per-atom prediction's layout: P_ALPHA added)
+static constexpr double RESTART_LAYOUT = 2026120202.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -578,7 +578,7 @@ void FixESPHIntegrate::post_run()
 {
   state->fetch();
   for (int i = 0; i < atom->nlocal; i++) {
-    save_normal_used(i, pred[i]);
+    save_normal_used(i, pred[i] + P_USED);
     pred[i][P_HASH] = fingerprint(i);
   }
   dt_used = pair->dt_step;
@@ -587,15 +587,15 @@ void FixESPHIntegrate::post_run()
 }
 
 /* ----------------------------------------------------------------------
-   the normal, surface gap, gap rate, engagement and normal cone of real
-   particle i that the last force computation used, into the prediction p of
-   the atom: the stored ones are those it found, which the next step uses
+   the normal, surface gap and gap rate of real particle i that the last
+   force computation used: the stored ones are those it found, which the
+   next step uses
 ------------------------------------------------------------------------- */
 
-void FixESPHIntegrate::save_normal_used(int i, double *p)
+void FixESPHIntegrate::save_normal_used(int i, double *out)
 {
-  if (pair->geometry_used(i, p + P_USED, p + P_CONE_USED)) return;
-  for (int k = 0; k < 6; k++) p[P_USED + k] = p[P_CONE_USED + k] = 0.0;
+  if (pair->geometry_used(i, out)) return;
+  for (int k = 0; k < 6; k++) out[k] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -634,7 +634,6 @@ int FixESPHIntegrate::resume_check()
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
     state->eng[i] = pred[i][P_USED + 5];
-    for (int k = 0; k < 6; k++) pred[i][P_CONE + k] = pred[i][P_CONE_USED + k];
   }
   // and the time step of its gap forecast (with the cfl keyword the step has changed since)
   pair->dt_step = dt_used;
@@ -879,7 +878,7 @@ int FixESPHIntegrate::pack_restart(int i, double *buf)
   for (int k = 0; k < NPRED; k++) buf[k + 1] = pred[i][k];
   if (update->whichflag == 1 && update->ntimestep != fp_step) {
     state->fetch();
-    save_normal_used(i, buf + 1);
+    save_normal_used(i, buf + P_USED + 1);
     buf[P_HASH + 1] = fingerprint(i);
   }
   return NPRED + 1;

@@ -64,12 +64,10 @@ class FixESPHIntegrate : public Fix {
   // the force computation; at the end of a run (and in restart files) the real-particle
   // normal, surface gap, gap rate and engagement that the last force computation used
   // (P_USED .. P_USED + 5), the fingerprint of the atom's state (P_HASH), and the
-  // predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch), and the cone of
-  // a real particle's surface normals (contact/normal cone, see esph_contact.h) that the pair
-  // style found for its next force computation (P_CONE) and, at the end of a run, the one
-  // the last computation used (P_CONE_USED); 0 without it
+  // predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch; last, so that
+  // restart files written before it existed are still read)
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
-                       P_HASH = 19, P_ALPHA = 20, P_CONE = 21, P_CONE_USED = 27, NPRED = 33;
+                       P_HASH = 19, P_ALPHA = 20, NPRED = 21;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
   // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),

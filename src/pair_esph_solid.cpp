@@ -57,7 +57,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), recon_keep(0), nboundary(0), atom_contact_flag(0),
+    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0), nboundary(0), atom_contact_flag(0),
     atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
@@ -374,6 +374,8 @@ void PairESPHSolid::settings(int narg, char **arg)
   if (vswitch_flag) ESPHState::ensure_visc(lmp);
   // so are the strain rates the reconstruction uses (restart files, atom migration)
   if (recon_flag) ESPHState::ensure_recon(lmp);
+  // and the normal cones (carried from one force computation to the next)
+  if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (recon_flag && alpha == 0.0 && beta == 0.0 && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid visc/recon with visc alpha and beta 0 has no effect (there "
@@ -600,6 +602,7 @@ void PairESPHSolid::setup()
   normals_valid = pred_valid;
   dt_keep = pred_valid;
   recon_keep = pred_valid;
+  cone_keep = pred_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -633,6 +636,11 @@ void PairESPHSolid::setup()
                "Pair esph/solid visc/recon: the fix {} of d2_esph_drec is gone (it must not be "
                "deleted)",
                ESPHState::FIX_ID_RECON);
+  if (cone_flag && contact == CONTACT_SOLID && !state->cone)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid contact/normal cone: the fix {} of d2_esph_cone is gone (it must "
+               "not be deleted)",
+               ESPHState::FIX_ID_CONE);
 
   grow_work();
   // rates start at zero until the first compute
@@ -710,8 +718,7 @@ void PairESPHSolid::hoist()
   // unless it re-evaluates the last computation (a continued run)
   double **drec = recon_flag ? state->drec : nullptr;
   const int recon_shift = drec && !recon_keep;
-  const int qcn = qcol_n;
-  double **const pall = fix_int->pred;
+
   recon_keep = 0;
 
   // per chunk of atoms: the smallest time step, the first atom whose h is too large
@@ -741,8 +748,7 @@ void PairESPHSolid::hoist()
       q[Q_ENG] = state->eng[i];
       if (drec)
         for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
-      if (qcn >= 0)
-        for (int k = 0; k < 6; k++) q[qcn + k] = pall[i][FixESPHIntegrate::P_CONE + k];
+
       if (rmass[i] > 0.0) {
         const int itype = type[i];
         const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
@@ -789,6 +795,21 @@ void PairESPHSolid::hoist()
     dtmin_t[tid] = dtl;
     hbad_t[tid] = hb;
   });
+  // contact/normal cone: the cones of the last computation become the ones this one uses
+  // (unless it re-evaluates the last computation)
+  if (qcol_n >= 0) {
+    const int qcn = qcol_n;
+    double **cone = state->cone;
+    const int shift = !cone_keep;
+    ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+      for (int i = from; i < to; i++) {
+        if (shift)
+          for (int k = 0; k < 6; k++) cone[i][6 + k] = cone[i][k];
+        for (int k = 0; k < 6; k++) hq[i][qcn + k] = cone[i][6 + k];
+      }
+    });
+  }
+  cone_keep = 0;
   dt_cfl = BIG_DT;
   for (int t = 0; t < nthreads; t++) {
     dt_cfl = MIN(dt_cfl, dtmin[t]);
@@ -839,7 +860,8 @@ void PairESPHSolid::stagger_save()
     g[4] = state->gapv[i];
     g[5] = state->eng[i];
     g[6] = state->depth[i];
-    for (int k = 0; k < 6; k++) g[7 + k] = fix_int->pred[i][FixESPHIntegrate::P_CONE + k];
+    if (state->cone)
+      for (int k = 0; k < 12; k++) g[7 + k] = state->cone[i][k];
   }
   stagger_flags[0] = normals_valid;
   stagger_flags[1] = dt_keep;
@@ -857,7 +879,8 @@ void PairESPHSolid::stagger_restore()
     state->gapv[i] = g[4];
     state->eng[i] = g[5];
     state->depth[i] = g[6];
-    for (int k = 0; k < 6; k++) fix_int->pred[i][FixESPHIntegrate::P_CONE + k] = g[7 + k];
+    if (state->cone)
+      for (int k = 0; k < 12; k++) state->cone[i][k] = g[7 + k];
   }
   normals_valid = stagger_flags[0];
   dt_keep = stagger_flags[1];
@@ -991,6 +1014,7 @@ void PairESPHSolid::finalize(int eflag)
   double **v = atom->v;
   const int bnd = (nboundary > 0);
   const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
+  const int qcn = qcol_n;
 
   std::vector<double> esum(nthreads, 0.0);
   double *const esum_t = esum.data();
@@ -1050,6 +1074,7 @@ void PairESPHSolid::finalize(int eflag)
           dalpha[i] = -(al - vswitch_min) * vswitch_l * q[Q_C] / q[Q_H] + compress * (alpha - al);
         }
         if (bnd) store_normal(i);
+        if (qcn >= 0) store_cone(i);
         if (eflag) {
           const double ei = rmass[i] * q[Q_E] * units.energy;
           es += ei;

@@ -52,7 +52,7 @@ class PairESPHSolid : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
-  bool geometry_used(int, double *, double *) const;
+  bool geometry_used(int, double *) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 38;
@@ -122,6 +122,7 @@ class PairESPHSolid : public Pair {
   int qcol_b;        // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
   int qcol_n;        // contact/normal cone: first column of the cone C_i (Voigt), or -1
   int qcol_d;        // visc/recon: first column of the strain rate D_i (Voigt) it uses, or -1
+  int cone_keep;     // contact/normal cone: the same for the cones
   int recon_keep;    // visc/recon: the next computation re-evaluates the last one: keep
                      // the strain rates that one used
   int comm_stage;
@@ -136,7 +137,7 @@ class PairESPHSolid : public Pair {
   int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
   // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
   std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth, cone
-  static constexpr int NGEOM = 13;
+  static constexpr int NGEOM = 19;
   int stagger_flags[2];
   void stagger_save();
   void stagger_restore();
@@ -181,6 +182,7 @@ class PairESPHSolid : public Pair {
   static std::array<double, 3> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
+  void store_cone(int);
   void artificial_stress();
   void atom_contact_clear();
   virtual void pair_pass(int);

@@ -25,7 +25,6 @@
 #include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
-#include "fix_esph_integrate.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -64,22 +63,30 @@ void PairESPHSolid::store_normal(int i)
     state->gap[i] = GAP_NONE;
     state->gapv[i] = 0.0;
   }
-  if (qcol_n >= 0) {
-    double *cn = fix_int->pred[i] + FixESPHIntegrate::P_CONE;
-    if (a[A_WSUM] > 0.0 && state->gap[i] < GAP_NONE) {
-      const double inv = 1.0 / a[A_WSUM];
-      const double s[6] = {a[A_NN] * inv,     a[A_NN + 1] * inv, a[A_NN + 2] * inv,
-                           a[A_NN + 3] * inv, a[A_NN + 4] * inv, a[A_NN + 5] * inv};
-      contact_cone(s, cn);
-    } else {
-      for (int k = 0; k < 6; k++) cn[k] = 0.0;
-    }
-  }
   // engagement for the next computation, from the gap it will see; the stored value is
   // the one this computation used until now (hoisted)
   state->eng[i] = (contact == CONTACT_SOLID)
       ? contact_engage(hq[i][Q_ENG], state->gap[i] + dt_step * state->gapv[i] - GAP_EPS * h0, onset)
       : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   contact/normal cone: the cone of real particle i from its sums (for the
+   next computation), where another body's surface is in range; else none
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::store_cone(int i)
+{
+  const double *a = acc[i];
+  double *cn = state->cone[i];
+  if (a[A_WSUM] > 0.0 && state->gap[i] < GAP_NONE) {
+    const double inv = 1.0 / a[A_WSUM];
+    const double s[6] = {a[A_NN] * inv,     a[A_NN + 1] * inv, a[A_NN + 2] * inv,
+                         a[A_NN + 3] * inv, a[A_NN + 4] * inv, a[A_NN + 5] * inv};
+    contact_cone(s, cn);
+  } else {
+    for (int k = 0; k < 6; k++) cn[k] = 0.0;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -219,6 +226,7 @@ void PairESPHSolid::compute_normals()
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) continue;
     store_normal(i);
+    if (qcol_n >= 0) store_cone(i);
     // the force computation brings the gap forward by one step: it is of now
     if (state->gap[i] < GAP_NONE) state->gap[i] -= update->dt * state->gapv[i];
   }
@@ -226,12 +234,12 @@ void PairESPHSolid::compute_normals()
 }
 
 /* ----------------------------------------------------------------------
-   normal, surface gap, gap rate and engagement (6 values), and the normal cone (6, zero
-   without contact/normal cone) of owned atom i that the last force computation used (its hoisted copy; valid until the next
+   normal, surface gap, gap rate and engagement (6 values) of owned atom i that the
+   last force computation used (its hoisted copy; valid until the next
    computation); false before any computation
 ------------------------------------------------------------------------- */
 
-bool PairESPHSolid::geometry_used(int i, double *out, double *cone) const
+bool PairESPHSolid::geometry_used(int i, double *out) const
 {
   if (!hq) return false;
   const double *q = hq[i];
@@ -239,7 +247,6 @@ bool PairESPHSolid::geometry_used(int i, double *out, double *cone) const
   out[3] = q[Q_GAP];
   out[4] = q[Q_GAPV];
   out[5] = q[Q_ENG];
-  for (int k = 0; k < 6; k++) cone[k] = (qcol_n >= 0) ? q[qcol_n + k] : 0.0;
   return true;
 }
 

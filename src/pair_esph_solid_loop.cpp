@@ -34,6 +34,19 @@ using namespace ESPH;
 using namespace ESPHSolid;
 
 /* ----------------------------------------------------------------------
+   the common normal from the cones (contact/normal cone), out of line: the
+   loop without it keeps its registers
+------------------------------------------------------------------------- */
+
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void cone_normal(const double *ci, const double *cj, double *nc)
+{
+  contact_normal_cone(ci, cj, nc);
+}
+
+/* ----------------------------------------------------------------------
    the pair loop: one pass over the half neighbour list
    real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
    real-real other body: contact rule (section 4.3), normal components only
@@ -84,7 +97,10 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   // visc/recon: the limiter, and the column of the strain rates it reconstructs with
   const int recon = VEXT ? recon_flag : 0;
   const int qd = qcol_d;
-  const int qcn = qcol_n;
+  // contact/normal cone: compiled into its own variant and into those with friction or rigid
+  // bodies (which test it at run time), out of the plain loop
+  constexpr int CONE = BND && (EXTRA & (EXTRA_CONE | EXTRA_FRICTION | EXTRA_RIGID));
+  const int qcn = CONE ? qcol_n : -1;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -180,8 +196,10 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         }
         if (p < nlocal || newton_pair || p == i) {
           add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
-          if (solid) add_gap_sums(acc[p], w, qk, dt);
-          if (qcn >= 0) add_cone_sums(acc[p], w, qk + Q_N);
+          if (solid) {
+            add_gap_sums(acc[p], w, qk, dt);
+            if (qcn >= 0) add_cone_sums(acc[p], w, qk + Q_N);
+          }
         }
         continue;
       }
@@ -219,7 +237,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
       double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
-        if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
+        if (qcn >= 0) cone_normal(qi + qcn, qj + qcn, nc);
         vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
         // the slip velocity (of i against j) for friction
@@ -433,6 +451,10 @@ template <int BND, int HVAR, int HEAT, int CORR> void PairESPHSolid::pair_loop_e
   // friction and rigid bodies act between bodies only: with boundary particles
   if constexpr (BND) {
     const int fric = (friction > 0.0 && contact != CONTACT_OFF);
+    if (qcol_n >= 0 && !fric && !rigid_flag) {
+      pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_CONE>(extra, out);
+      return;
+    }
     switch ((fric ? EXTRA_FRICTION : 0) | (rigid_flag ? EXTRA_RIGID : 0)) {
       case EXTRA_FRICTION:
         pair_loop_select<BND, HVAR, HEAT, CORR, EXTRA_FRICTION>(extra, out);
