@@ -46,6 +46,8 @@
 #ifndef LMP_ESPH_CONTACT_H
 #define LMP_ESPH_CONTACT_H
 
+#include "esph_strength.h"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -97,8 +99,7 @@ static constexpr double CONE_R0 = 0.030153689607045803;    // sin^2(10 degrees)
 
 inline void contact_cone(const double *s, double *cone)
 {
-  Eigen::Matrix3d S;
-  S << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
+  const Eigen::Matrix3d S = voigt_to_matrix(s);
   // the iterative solver: backward stable also for close eigenvalues (the closed form of
   // computeDirect() loses digits there, and decompositions would differ beyond round-off)
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(S);
@@ -111,12 +112,7 @@ inline void contact_cone(const double *s, double *cone)
       const double g = std::min(1.0, std::max(0.0, lam(a) / (CONE_R0 * lmax)));
       if (g > 0.0) C += g * V.col(a) * V.col(a).transpose();
     }
-  cone[0] = C(0, 0);
-  cone[1] = C(1, 1);
-  cone[2] = C(2, 2);
-  cone[3] = C(0, 1);
-  cone[4] = C(0, 2);
-  cone[5] = C(1, 2);
+  matrix_to_voigt(C, cone);
 }
 
 /* the common normal of a cross-body pair from the cones of both surfaces: the limit
@@ -133,9 +129,7 @@ static constexpr int CONE_SQUARINGS = 5;
 
 inline void contact_normal_cone(const double *ci, const double *cj, double *nc)
 {
-  Eigen::Matrix3d M;
-  M << ci[0] + cj[0], ci[3] + cj[3], ci[4] + cj[4], ci[3] + cj[3], ci[1] + cj[1],
-      ci[5] + cj[5], ci[4] + cj[4], ci[5] + cj[5], ci[2] + cj[2];
+  Eigen::Matrix3d M = voigt_to_matrix(ci) + voigt_to_matrix(cj);
   const Eigen::Vector3d m(nc[0], nc[1], nc[2]);
   M += CONE_TIE * m * m.transpose();
   for (int k = 0; k < CONE_SQUARINGS; k++) {

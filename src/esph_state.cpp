@@ -86,8 +86,10 @@ void ESPHState::ensure_recon(LAMMPS *lmp)
 
 void ESPHState::ensure_cone(LAMMPS *lmp)
 {
-  if (internal_fix_exists(lmp, FIX_ID_CONE, "esph_cone")) return;
-  lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone 12", FIX_ID_CONE));
+  if (!internal_fix_exists(lmp, FIX_ID_CONE, "esph_cone"))
+    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone 6", FIX_ID_CONE));
+  if (!internal_fix_exists(lmp, FIX_ID_CONE_USED, "esph_cone_used"))
+    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone_used 6", FIX_ID_CONE_USED));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -95,7 +97,8 @@ void ESPHState::ensure_cone(LAMMPS *lmp)
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
     gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
-    drec(nullptr), cone(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1), icone(-1)
+    drec(nullptr), cone(nullptr), coneu(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1),
+    icone(-1), iconeu(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -141,5 +144,7 @@ void ESPHState::fetch()
   idrec = atom->find_custom("esph_drec", flag, cols);
   drec = (idrec >= 0) ? atom->darray[idrec] : nullptr;
   icone = atom->find_custom("esph_cone", flag, cols);
-  cone = (icone >= 0) ? atom->darray[icone] : nullptr;
+  iconeu = atom->find_custom("esph_cone_used", flag, cols);
+  cone = (icone >= 0 && iconeu >= 0) ? atom->darray[icone] : nullptr;
+  coneu = (icone >= 0 && iconeu >= 0) ? atom->darray[iconeu] : nullptr;
 }

@@ -33,9 +33,11 @@
 //   d2_esph_drec[12] strain rates of the reconstructed viscosity (fix ESPH_RECON, only with
 //                  pair_style esph/solid visc/recon): 0..5 D = sym(L) of the last force
 //                  computation (Voigt), 6..11 the D that computation used
-//   d2_esph_cone[12] cone of a real particle's boundary normals (fix ESPH_CONE, only with
-//                  pair_style esph/solid contact/normal cone): 0..5 found by the last force
-//                  computation (Voigt), 6..11 the cone that computation used
+//   d2_esph_cone[6] cone of a real particle's boundary normals found by the last force
+//                  computation (Voigt; fix ESPH_CONE, only with pair_style esph/solid
+//                  contact/normal cone), d2_esph_cone_used[6] the cone that computation used
+//                  (fix ESPH_CONE_USED: two fixes, so that data-file lines stay below
+//                  read_data's 256 characters)
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -55,6 +57,7 @@ class ESPHState {
   static constexpr const char *FIX_ID_VISC = "ESPH_VISC";
   static constexpr const char *FIX_ID_RECON = "ESPH_RECON";
   static constexpr const char *FIX_ID_CONE = "ESPH_CONE";
+  static constexpr const char *FIX_ID_CONE_USED = "ESPH_CONE_USED";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
@@ -76,15 +79,16 @@ class ESPHState {
   void fetch();
 
   double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
-  double *epsp;     // equivalent plastic strain, nullptr without plasticity
-  double *alpha;    // switched viscosity coefficient, nullptr without visc/switch
-  double **drec;    // strain rates of visc/recon (12 per atom), nullptr without it
-  double **cone;    // normal cones of contact/normal cone (12 per atom), nullptr without it
+  double *epsp;      // equivalent plastic strain, nullptr without plasticity
+  double *alpha;     // switched viscosity coefficient, nullptr without visc/switch
+  double **drec;     // strain rates of visc/recon (12 per atom), nullptr without it
+  double **cone;     // normal cones of contact/normal cone found (6 per atom), nullptr without
+  double **coneu;    // and the ones the last computation used (6 per atom)
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, icone;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, icone, iconeu;
 };
 
 }    // namespace LAMMPS_NS

@@ -57,8 +57,9 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0), nboundary(0), atom_contact_flag(0),
-    atom_contact_nmax(0), atom_contact(nullptr), state(nullptr), fix_int(nullptr), nthreads(1)
+    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0), nboundary(0),
+    atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
+    fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -638,9 +639,9 @@ void PairESPHSolid::setup()
                ESPHState::FIX_ID_RECON);
   if (cone_flag && contact == CONTACT_SOLID && !state->cone)
     error->all(FLERR, Error::NOLASTLINE,
-               "Pair esph/solid contact/normal cone: the fix {} of d2_esph_cone is gone (it must "
-               "not be deleted)",
-               ESPHState::FIX_ID_CONE);
+               "Pair esph/solid contact/normal cone: the fix {} or {} of the normal cones is "
+               "gone (they must not be deleted)",
+               ESPHState::FIX_ID_CONE, ESPHState::FIX_ID_CONE_USED);
 
   grow_work();
   // rates start at zero until the first compute
@@ -800,12 +801,13 @@ void PairESPHSolid::hoist()
   if (qcol_n >= 0) {
     const int qcn = qcol_n;
     double **cone = state->cone;
+    double **coneu = state->coneu;
     const int shift = !cone_keep;
     ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
       for (int i = from; i < to; i++) {
         if (shift)
-          for (int k = 0; k < 6; k++) cone[i][6 + k] = cone[i][k];
-        for (int k = 0; k < 6; k++) hq[i][qcn + k] = cone[i][6 + k];
+          for (int k = 0; k < 6; k++) coneu[i][k] = cone[i][k];
+        for (int k = 0; k < 6; k++) hq[i][qcn + k] = coneu[i][k];
       }
     });
   }
@@ -861,7 +863,10 @@ void PairESPHSolid::stagger_save()
     g[5] = state->eng[i];
     g[6] = state->depth[i];
     if (state->cone)
-      for (int k = 0; k < 12; k++) g[7 + k] = state->cone[i][k];
+      for (int k = 0; k < 6; k++) {
+        g[7 + k] = state->cone[i][k];
+        g[13 + k] = state->coneu[i][k];
+      }
   }
   stagger_flags[0] = normals_valid;
   stagger_flags[1] = dt_keep;
@@ -880,7 +885,10 @@ void PairESPHSolid::stagger_restore()
     state->eng[i] = g[5];
     state->depth[i] = g[6];
     if (state->cone)
-      for (int k = 0; k < 12; k++) state->cone[i][k] = g[7 + k];
+      for (int k = 0; k < 6; k++) {
+        state->cone[i][k] = g[7 + k];
+        state->coneu[i][k] = g[13 + k];
+      }
   }
   normals_valid = stagger_flags[0];
   dt_keep = stagger_flags[1];
@@ -901,8 +909,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // forward communication of what neighbours need, in one message
   comm_bnd = bnd;
-  nforward =
-      12 + (bnd ? 6 + (qcol_n >= 0 ? 6 : 0) : 0) + (heat_flag ? 2 : 0) + (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
+  nforward = 12 + (bnd ? 6 + (qcol_n >= 0 ? 6 : 0) : 0) + (heat_flag ? 2 : 0) +
+      (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;

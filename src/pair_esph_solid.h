@@ -86,7 +86,7 @@ class PairESPHSolid : public Pair {
   int contact;           // ESPH::ContactRule
   double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
   int onset;             // steps over which a newly touching particle's coupling builds up
-  int cone_flag;         // contact/normal: 1 cone (the common normal from both surfaces' cones), 0 mean
+  int cone_flag;         // contact/normal: 1 cone (common normal of the cones), 0 mean
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon

@@ -34,19 +34,6 @@ using namespace ESPH;
 using namespace ESPHSolid;
 
 /* ----------------------------------------------------------------------
-   the common normal from the cones (contact/normal cone), out of line: the
-   loop without it keeps its registers
-------------------------------------------------------------------------- */
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void cone_normal(const double *ci, const double *cj, double *nc)
-{
-  contact_normal_cone(ci, cj, nc);
-}
-
-/* ----------------------------------------------------------------------
    the pair loop: one pass over the half neighbour list
    real-real same body (or contact off): full SPH coupling (eqs. 1-7, 8, 15, 17)
    real-real other body: contact rule (section 4.3), normal components only
@@ -237,7 +224,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
       double vt[3] = {0.0, 0.0, 0.0};
       if (cross) {
         contact_normal(qi + Q_N, qj + Q_N, dx, nc);
-        if (qcn >= 0) cone_normal(qi + qcn, qj + qcn, nc);
+        if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
         vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
         xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
         // the slip velocity (of i against j) for friction

@@ -601,6 +601,63 @@ TEST_F(ESPHTest, RestartPlasticIsExact)
   END_HIDE_OUTPUT();
 }
 
+// the same with contact/normal cone (the normal cones in ESPH_CONE, found and used)
+TEST_F(ESPHTest, RestartConeIsExact)
+{
+  BEGIN_HIDE_OUTPUT();
+  restart_check(lmp, "contact/normal cone", "");
+  END_HIDE_OUTPUT();
+}
+
+// write_data / read_data with contact/normal cone: the ESPH_CONE and ESPH_CONE_USED sections
+// are written, and read back when named (the cones found by the last computation and the ones
+// it used)
+TEST_F(ESPHTest, DataFileConeSection)
+{
+  // sums of the xx (found), xx (used) and xy (found) components of the cones
+  auto cone_sums = [this]() {
+    int flag, cols;
+    const int k = lmp->atom->find_custom("esph_cone", flag, cols);
+    const int ku = lmp->atom->find_custom("esph_cone_used", flag, cols);
+    std::vector<double> sum(3, 0.0);
+    if (k < 0 || ku < 0) return sum;
+    double **c = lmp->atom->darray[k];
+    double **cu = lmp->atom->darray[ku];
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      sum[0] += c[i][0];
+      sum[1] += cu[i][0];
+      sum[2] += c[i][3];
+    }
+    return sum;
+  };
+  BEGIN_HIDE_OUTPUT();
+  for (const auto &line : utils::split_lines(setup_impact(50.0, "contact/normal cone")))
+    command(line);
+  command("run 40 post no");
+  END_HIDE_OUTPUT();
+  const auto ref = cone_sums();
+  // the contact face's real particles have a cone (a face: n n^T, trace 1)
+  EXPECT_GT(ref[0], 1.0);
+  EXPECT_GT(ref[1], 1.0);
+  BEGIN_HIDE_OUTPUT();
+  command("mass * 1.0");
+  command("write_data test_esph_cone.data");
+  command("clear");
+  command("units si");
+  command("atom_style atomic");
+  command("atom_modify map array");
+  command("region box block -0.0012 0.0012 -0.0005 0.0005 -0.0005 0.0005");
+  command("create_box 1 box");
+  command("pair_style esph/solid 1e-4 contact/normal cone");
+  command("read_data test_esph_cone.data add merge fix ESPH_STATE NULL ESPH_STATE "
+          "fix ESPH_STRESS NULL ESPH_STRESS fix ESPH_NORMAL NULL ESPH_NORMAL "
+          "fix ESPH_CONE NULL ESPH_CONE fix ESPH_CONE_USED NULL ESPH_CONE_USED");
+  END_HIDE_OUTPUT();
+  const auto back = cone_sums();
+  for (int k = 0; k < 3; k++) EXPECT_NEAR(back[k], ref[k], 1e-12 * fabs(ref[0]));
+  remove("test_esph_cone.data");
+}
+
 // write_data / read_data keeps the per-atom state (density, stress, body, normals)
 TEST_F(ESPHTest, DataFileRoundTrip)
 {

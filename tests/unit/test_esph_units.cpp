@@ -437,7 +437,8 @@ TEST(Contact, NormalCone)
   second_moment(pj_, w3, 3, sj);
   contact_cone(si, ci);
   contact_cone(sj, cj);
-  const double ni2[3] = {0.5 + 0.5 * ca5, 0.1 * sa5, 0.0}, nj2[3] = {-(0.5 + 0.5 * ca5), 0.1 * sa5, 0.0};
+  const double ni2[3] = {0.5 + 0.5 * ca5, 0.1 * sa5, 0.0},
+               nj2[3] = {-(0.5 + 0.5 * ca5), 0.1 * sa5, 0.0};
   contact_normal(ni2, nj2, xab, nc);
   contact_normal_cone(ci, cj, nc);
   EXPECT_NEAR(nc[0], 1.0, 1e-14);
