@@ -78,8 +78,11 @@ void ESPHState::ensure_visc(LAMMPS *lmp)
 
 void ESPHState::ensure_recon(LAMMPS *lmp)
 {
-  if (internal_fix_exists(lmp, FIX_ID_RECON, "esph_drec")) return;
-  lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_drec 12", FIX_ID_RECON));
+  if (!internal_fix_exists(lmp, FIX_ID_RECON, "esph_drec"))
+    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_drec 6", FIX_ID_RECON));
+  if (!internal_fix_exists(lmp, FIX_ID_RECON_USED, "esph_drec_used"))
+    lmp->modify->add_fix(
+        fmt::format("{} all property/atom d2_esph_drec_used 6", FIX_ID_RECON_USED));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -97,8 +100,8 @@ void ESPHState::ensure_cone(LAMMPS *lmp)
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
     gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
-    drec(nullptr), cone(nullptr), coneu(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1),
-    icone(-1), iconeu(-1)
+    drec(nullptr), drecu(nullptr), cone(nullptr), coneu(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1),
+    idrec(-1), idrecu(-1), icone(-1), iconeu(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -142,7 +145,15 @@ void ESPHState::fetch()
   ialpha = atom->find_custom("esph_alpha", flag, cols);
   alpha = (ialpha >= 0) ? atom->dvector[ialpha] : nullptr;
   idrec = atom->find_custom("esph_drec", flag, cols);
-  drec = (idrec >= 0) ? atom->darray[idrec] : nullptr;
+  // a restart file of ESPH before the split kept both in one 12-column d2_esph_drec
+  if (idrec >= 0 && cols != 6)
+    lmp->error->all(FLERR, Error::NOLASTLINE,
+                    "ESPH per-atom property d2_esph_drec has {} columns, expected 6 (a restart "
+                    "or data file of an older ESPH version: rerun its input with this version)",
+                    cols);
+  idrecu = atom->find_custom("esph_drec_used", flag, cols);
+  drec = (idrec >= 0 && idrecu >= 0) ? atom->darray[idrec] : nullptr;
+  drecu = (idrec >= 0 && idrecu >= 0) ? atom->darray[idrecu] : nullptr;
   icone = atom->find_custom("esph_cone", flag, cols);
   iconeu = atom->find_custom("esph_cone_used", flag, cols);
   cone = (icone >= 0 && iconeu >= 0) ? atom->darray[icone] : nullptr;

@@ -30,9 +30,11 @@
 //   d_esph_epsp    equivalent plastic strain (fix ESPH_PLASTIC, only with plasticity)
 //   d_esph_alpha   coefficient of the switched artificial viscosity (fix ESPH_VISC, only with
 //                  pair_style esph/solid visc/switch; 0 = unset)
-//   d2_esph_drec[12] strain rates of the reconstructed viscosity (fix ESPH_RECON, only with
-//                  pair_style esph/solid visc/recon): 0..5 D = sym(L) of the last force
-//                  computation (Voigt), 6..11 the D that computation used
+//   d2_esph_drec[6] strain rate D = sym(L) of the last force computation (Voigt) for the
+//                  reconstructed viscosity (fix ESPH_RECON, only with pair_style esph/solid
+//                  visc/recon), d2_esph_drec_used[6] the D that computation used (fix
+//                  ESPH_RECON_USED: two fixes, so that data-file lines stay below read_data's
+//                  256 characters)
 //   d2_esph_cone[6] cone of a real particle's boundary normals found by the last force
 //                  computation (Voigt; fix ESPH_CONE, only with pair_style esph/solid
 //                  contact/normal cone), d2_esph_cone_used[6] the cone that computation used
@@ -56,6 +58,7 @@ class ESPHState {
   static constexpr const char *FIX_ID_PLASTIC = "ESPH_PLASTIC";
   static constexpr const char *FIX_ID_VISC = "ESPH_VISC";
   static constexpr const char *FIX_ID_RECON = "ESPH_RECON";
+  static constexpr const char *FIX_ID_RECON_USED = "ESPH_RECON_USED";
   static constexpr const char *FIX_ID_CONE = "ESPH_CONE";
   static constexpr const char *FIX_ID_CONE_USED = "ESPH_CONE_USED";
 
@@ -81,14 +84,17 @@ class ESPHState {
   double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
   double *epsp;      // equivalent plastic strain, nullptr without plasticity
   double *alpha;     // switched viscosity coefficient, nullptr without visc/switch
-  double **drec;     // strain rates of visc/recon (12 per atom), nullptr without it
+  double **drec;     // strain rates of visc/recon found by the last computation (6 per atom),
+                     // nullptr without it
+  double **drecu;    // and the ones the last computation used (6 per atom)
   double **cone;     // normal cones of contact/normal cone found (6 per atom), nullptr without
   double **coneu;    // and the ones the last computation used (6 per atom)
   int *body;
 
  private:
   LAMMPS *lmp;
-  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, icone, iconeu;
+  int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, idrecu, icone,
+      iconeu;
 };
 
 }    // namespace LAMMPS_NS

@@ -634,9 +634,9 @@ void PairESPHSolid::setup()
   }
   if (recon_flag && !state->drec)
     error->all(FLERR, Error::NOLASTLINE,
-               "Pair esph/solid visc/recon: the fix {} of d2_esph_drec is gone (it must not be "
-               "deleted)",
-               ESPHState::FIX_ID_RECON);
+               "Pair esph/solid visc/recon: the fix {} of d2_esph_drec or {} of "
+               "d2_esph_drec_used is gone (they must not be deleted)",
+               ESPHState::FIX_ID_RECON, ESPHState::FIX_ID_RECON_USED);
   if (cone_flag && contact == CONTACT_SOLID && !state->cone)
     error->all(FLERR, Error::NOLASTLINE,
                "Pair esph/solid contact/normal cone: the fix {} or {} of the normal cones is "
@@ -718,6 +718,7 @@ void PairESPHSolid::hoist()
   // visc/recon: the strain rates of the last computation become the ones this one uses,
   // unless it re-evaluates the last computation (a continued run)
   double **drec = recon_flag ? state->drec : nullptr;
+  double **drecu = recon_flag ? state->drecu : nullptr;
   const int recon_shift = drec && !recon_keep;
 
   recon_keep = 0;
@@ -733,7 +734,7 @@ void PairESPHSolid::hoist()
     int hb = -1;
     for (int i = from; i < to; i++) {
       if (recon_shift)
-        for (int k = 0; k < 6; k++) drec[i][6 + k] = drec[i][k];
+        for (int k = 0; k < 6; k++) drecu[i][k] = drec[i][k];
       double *q = hq[i];
       const double *p = pred ? pred[i] : nullptr;
       // with fix esph/integrate move no another fix has set v at the end of the step
@@ -748,7 +749,7 @@ void PairESPHSolid::hoist()
       q[Q_GAPV] = state->gapv[i];
       q[Q_ENG] = state->eng[i];
       if (drec)
-        for (int k = 0; k < 6; k++) q[qcol_d + k] = drec[i][6 + k];
+        for (int k = 0; k < 6; k++) q[qcol_d + k] = drecu[i][k];
 
       if (rmass[i] > 0.0) {
         const int itype = type[i];

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <mpi.h>
 #include <string>
@@ -609,16 +610,30 @@ TEST_F(ESPHTest, RestartConeIsExact)
   END_HIDE_OUTPUT();
 }
 
-// write_data / read_data with contact/normal cone: the ESPH_CONE and ESPH_CONE_USED sections
-// are written, and read back when named (the cones found by the last computation and the ones
-// it used)
-TEST_F(ESPHTest, DataFileConeSection)
+// the same with visc/recon (the strain rates in ESPH_RECON and ESPH_RECON_USED)
+TEST_F(ESPHTest, RestartReconIsExact)
 {
-  // sums of the xx (found), xx (used) and xy (found) components of the cones
-  auto cone_sums = [this]() {
+  BEGIN_HIDE_OUTPUT();
+  restart_check(lmp, "visc/recon vanleer", "");
+  END_HIDE_OUTPUT();
+}
+
+// write_data / read_data of a pair of internal per-atom arrays (6 columns each) that an option
+// of the pair style creates, one found by the last computation and one it used (fixes fix_id
+// and fix_id_used): both sections are written, with every line within read_data's 256
+// characters, and read back when named; min_found: a lower bound of the sum of the found
+// array's first column after 40 steps of the impact (the option is active)
+static void data_file_pair_check(LAMMPS *lmp, const std::string &pstyle, const std::string &name,
+                                 const std::string &fix_id, double min_found)
+{
+  auto command = [lmp](const std::string &line) {
+    lmp->input->one(line);
+  };
+  // sums of the first component (found and used) and the fourth (found)
+  auto sums = [lmp, &name]() {
     int flag, cols;
-    const int k = lmp->atom->find_custom("esph_cone", flag, cols);
-    const int ku = lmp->atom->find_custom("esph_cone_used", flag, cols);
+    const int k = lmp->atom->find_custom(name.c_str(), flag, cols);
+    const int ku = lmp->atom->find_custom((name + "_used").c_str(), flag, cols);
     std::vector<double> sum(3, 0.0);
     if (k < 0 || ku < 0) return sum;
     double **c = lmp->atom->darray[k];
@@ -630,32 +645,52 @@ TEST_F(ESPHTest, DataFileConeSection)
     }
     return sum;
   };
-  BEGIN_HIDE_OUTPUT();
-  for (const auto &line : utils::split_lines(setup_impact(50.0, "contact/normal cone")))
-    command(line);
+  for (const auto &line : utils::split_lines(setup_impact(50.0, pstyle))) command(line);
   command("run 40 post no");
-  END_HIDE_OUTPUT();
-  const auto ref = cone_sums();
-  // the contact face's real particles have a cone (a face: n n^T, trace 1)
-  EXPECT_GT(ref[0], 1.0);
-  EXPECT_GT(ref[1], 1.0);
-  BEGIN_HIDE_OUTPUT();
+  const auto ref = sums();
+  EXPECT_GT(fabs(ref[0]), min_found);
+  EXPECT_GT(fabs(ref[1]), min_found);
+  const std::string file = "test_esph_" + name + ".data";
   command("mass * 1.0");
-  command("write_data test_esph_cone.data");
+  command("write_data " + file);
+  // read_data reads at most 256 characters of a line
+  std::ifstream in(file);
+  std::string line;
+  size_t longest = 0;
+  while (std::getline(in, line)) longest = std::max(longest, line.size());
+  EXPECT_LT(longest, 256u);
   command("clear");
   command("units si");
   command("atom_style atomic");
   command("atom_modify map array");
   command("region box block -0.0012 0.0012 -0.0005 0.0005 -0.0005 0.0005");
   command("create_box 1 box");
-  command("pair_style esph/solid 1e-4 contact/normal cone");
-  command("read_data test_esph_cone.data add merge fix ESPH_STATE NULL ESPH_STATE "
-          "fix ESPH_STRESS NULL ESPH_STRESS fix ESPH_NORMAL NULL ESPH_NORMAL "
-          "fix ESPH_CONE NULL ESPH_CONE fix ESPH_CONE_USED NULL ESPH_CONE_USED");
-  END_HIDE_OUTPUT();
-  const auto back = cone_sums();
+  command("pair_style esph/solid 1e-4 " + pstyle);
+  command(fmt::format("read_data {} add merge fix ESPH_STATE NULL ESPH_STATE fix ESPH_STRESS NULL "
+                      "ESPH_STRESS fix ESPH_NORMAL NULL ESPH_NORMAL fix {} NULL {} fix {}_USED "
+                      "NULL {}_USED",
+                      file, fix_id, fix_id, fix_id, fix_id));
+  const auto back = sums();
   for (int k = 0; k < 3; k++) EXPECT_NEAR(back[k], ref[k], 1e-12 * fabs(ref[0]));
-  remove("test_esph_cone.data");
+  remove(file.c_str());
+}
+
+// contact/normal cone: the cones found and used (ESPH_CONE, ESPH_CONE_USED); the contact
+// face's real particles have a cone (a face: n n^T, trace 1)
+TEST_F(ESPHTest, DataFileConeSection)
+{
+  BEGIN_HIDE_OUTPUT();
+  data_file_pair_check(lmp, "contact/normal cone", "esph_cone", "ESPH_CONE", 1.0);
+  END_HIDE_OUTPUT();
+}
+
+// visc/recon: the strain rates found and used (ESPH_RECON, ESPH_RECON_USED); the impact
+// compresses the rods along x (D_xx summed over the atoms well away from 0)
+TEST_F(ESPHTest, DataFileReconSection)
+{
+  BEGIN_HIDE_OUTPUT();
+  data_file_pair_check(lmp, "visc/recon vanleer", "esph_drec", "ESPH_RECON", 1.0);
+  END_HIDE_OUTPUT();
 }
 
 // write_data / read_data keeps the per-atom state (density, stress, body, normals)
