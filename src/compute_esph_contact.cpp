@@ -59,6 +59,16 @@ void ComputeESPHContact::init()
 }
 
 /* ----------------------------------------------------------------------
+   the number of rows now (fix ave/time mode vector sizes its columns by it)
+------------------------------------------------------------------------- */
+
+int ComputeESPHContact::lock_length()
+{
+  if (invoked_array != update->ntimestep) compute_array();
+  return size_array_rows;
+}
+
+/* ----------------------------------------------------------------------
    columns: 1, 2 bodies I < J; 3 touching pairs, 4 interacting pairs,
    5 normal force now; 6 impulse so far; 7 first touch, 8 end of the first
    contact episode (-1 before), 9 its duration (-1 before it ends once),

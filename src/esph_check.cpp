@@ -355,7 +355,8 @@ void ESPHCheck::rigid_bodies(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int
    hash grid of cell size spacing, searched up to MAX_RATIO cells away; the
    median comes from a global histogram. Particles whose nearest neighbour is
    on another rank count as far (at most a thin layer at subdomain faces),
-   which the median does not see
+   which the median does not see. ISOLATED: most particles have no
+   same-body neighbour within MAX_RATIO spacings
 ------------------------------------------------------------------------- */
 
 double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double spacing)
@@ -415,9 +416,10 @@ double ESPHCheck::spacing_ratio(LAMMPS *lmp, ESPHState *st, int groupbit, double
                 lmp->world);
   const bigint n = nall, half = (n + 1) / 2;
   bigint cum = 0;
-  for (size_t b = 0; b < histall.size(); b++) {
+  for (size_t b = 0; b + 1 < histall.size(); b++) {
     cum += histall[b];
     if (cum >= half) return MIN((b + 0.5) / NN_BINS, MAX_RATIO);
   }
-  return MAX_RATIO;
+  // the last bin: no same-body neighbour within MAX_RATIO spacings
+  return ISOLATED;
 }

@@ -81,13 +81,14 @@ namespace ESPHCheck {
   void rigid_bodies(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
 
   // median distance from each real particle of the group to its nearest real
-  // neighbour of the same body, in units of spacing (all group particles gathered
-  // once; capped at MAX_RATIO); -1 if the group has no real particles
+  // neighbour of the same body, in units of spacing (capped at MAX_RATIO); -1 if the
+  // group has no real particles, ISOLATED if most have no neighbour within MAX_RATIO
   double spacing_ratio(LAMMPS *lmp, ESPHState *state, int groupbit, double spacing);
 
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
   static constexpr double MAX_RATIO = 3.0;
+  static constexpr double ISOLATED = -2.0;
 }    // namespace ESPHCheck
 
 }    // namespace LAMMPS_NS

@@ -166,6 +166,13 @@ void FixESPHBoundary::post_constructor()
   // new boundary particles (not reused ones): the spacing must be the particles' spacing
   if (nzero_all == 0) {
     const double ratio = ESPHCheck::spacing_ratio(lmp, state, groupbit, spacing);
+    if (ratio == ESPHCheck::ISOLATED)
+      error->all(FLERR,
+                 "Fix esph/boundary spacing {}: most real particles of group {} have no "
+                 "particle of their own body within {} x spacing; a body is a cloud of particles "
+                 "about one spacing apart (a body of a single particle has no surface): set "
+                 "spacing to the particle (lattice) spacing, or give the bodies more particles",
+                 spacing, group->names[igroup], ESPHCheck::MAX_RATIO);
     if (ratio > 0.0) {
       const double off = MAX(ratio, 1.0 / ratio);
       const std::string what = fmt::format("Fix esph/boundary spacing {} but the real particles of "
@@ -212,8 +219,10 @@ void FixESPHBoundary::init()
     if (now != made_for)
       error->all(FLERR, Error::NOLASTLINE,
                  "Fix esph/boundary {} generated its boundary particles for the real particles "
-                 "({}) but group {} now holds ({}): define fix esph/boundary after the masses "
-                 "and body IDs (i_esph_body) are set, and do not change them afterwards",
+                 "({}) but group {} now holds ({}): real particles were deleted, lost or given "
+                 "other masses or body IDs (i_esph_body) since. Define fix esph/boundary after "
+                 "the masses and body IDs are set; after delete_atoms or lost atoms, define it "
+                 "again (unfix, then fix) to generate the surface anew",
                  id, ESPHCheck::format_bodies(made_for), group->names[igroup],
                  ESPHCheck::format_bodies(now));
   }
@@ -248,7 +257,11 @@ void FixESPHBoundary::init()
   for (int b : real_bodies)
     if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b))
       error->all(FLERR, Error::NOLASTLINE,
-                 "Body {} has real particles but no boundary particles in fix esph/boundary", b);
+                 "Body {} has real particles but no boundary particles in fix esph/boundary "
+                 "(a body gets them where its particles have a surface: a single particle has "
+                 "no surface; give the body more particles or its boundary particles with "
+                 "given)",
+                 b);
   for (int b : bnd_bodies)
     if (!real_bodies.empty() && !std::binary_search(real_bodies.begin(), real_bodies.end(), b))
       error->all(FLERR, Error::NOLASTLINE,

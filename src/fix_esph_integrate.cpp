@@ -28,6 +28,7 @@
 #include "esph_strength.h"
 #include "esph_threads.h"
 #include "force.h"
+#include "input.h"
 #include "memory.h"
 #include "modify.h"
 #include "output.h"
@@ -180,6 +181,14 @@ void FixESPHIntegrate::init()
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/integrate requires pair style esph/solid");
   if (modify->get_fix_by_style("^esph/integrate").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, Error::NOLASTLINE,
+               "Fix esph/integrate does not support run_style {}: use run_style verlet",
+               update->integrate_style);
+  if (cfl > 0.0 && !modify->get_fix_by_style("^dt/reset").empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/integrate cfl and fix dt/reset both set the time step (fix "
+                   "dt/reset wins): drop one of them");
   // a restart file written during a run with a fixed time step holds the elapsed time at
   // the start of that run, and Integrate::init() counts the time from the current step:
   // restore the time of the file's step, which this fix stored
@@ -188,6 +197,19 @@ void FixESPHIntegrate::init()
     update->atimestep = update->ntimestep;
   }
   time_pending = 0;
+  // reset_timestep to an earlier step sets the time to 0: the contact history keeps the
+  // times of the old origin
+  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  double latest = std::max(contact_all.tfirst, contact_all.tlatest);
+  for (const auto &r : body_records) latest = std::max(latest, std::max(r.tfirst, r.tlatest));
+  const bool rerun = input->command && strcmp(input->command, "rerun") == 0;
+  if (latest > now * (1.0 + 1.0e-12) + 1.0e-300 && !rerun && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/integrate: the time ({}) is before the contact history's last "
+                   "time ({}), reset by reset_timestep: the first-touch and end times keep the "
+                   "old origin, so contact durations across the reset are wrong: use "
+                   "reset_timestep before the bodies touch",
+                   now, latest);
   state->fetch();
   for (int t = 1; t <= atom->ntypes; t++)
     if (pair->yield[t] > 0.0 && !state->epsp)

@@ -34,6 +34,7 @@
 #include "fix_esph_integrate.h"
 #include "force.h"
 #include "info.h"
+#include "input.h"
 #include "math_special.h"
 #include "memory.h"
 #include "modify.h"
@@ -536,6 +537,17 @@ void PairESPHSolid::init_style()
                ustyle);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
+  // an SPH solid has no potential energy whose gradient is its force
+  if (update->whichflag == 2)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid does not support minimize: relax an SPH solid with a damped "
+               "run instead (e.g. fix viscous with fix esph/integrate)");
+  if (update->whichflag == 1 && input->command && strcmp(input->command, "rerun") == 0 &&
+      comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid with rerun: a dump holds no SPH state (density, energy, "
+                   "stress), so the forces and energies of the frames are those of the state "
+                   "left by the last run, not of the frames");
   auto fixes = modify->get_fix_by_style("^esph/integrate");
   if (fixes.empty())
     error->all(FLERR, Error::NOLASTLINE,

@@ -3,6 +3,8 @@
 reports each interface apart. Its impulse is the momentum handed across the interface,
 its first touch is when the gap has closed, each interface touches once, momentum is
 conserved to round-off, and the same on 1 and 2 ranks and in a split run."""
+import os
+
 import numpy as np
 
 import esphtest as et
@@ -23,6 +25,18 @@ def cradle(name, np_=1, **v):
 
 log, s = cradle("np1")
 print("INFO", s)
+# fix ave/time mode vector of the compute's whole array (the example writes interfaces.txt):
+# its last block holds both interfaces with the impulses the final print reports
+with open(os.path.join(a.lastdir, "interfaces.txt")) as f:
+    blocks = [l.split() for l in f if l.strip() and not l.startswith("#")]
+k = max(i for i, b in enumerate(blocks) if len(b) == 2)
+last = blocks[k + 1:]
+c.near("fix ave/time mode vector: rows of the last block", len(last), 2, 0,
+       "one row per touching pair of bodies")
+c.near("fix ave/time mode vector: impulse of interface 1-2", float(last[0][6]), s["J12"],
+       1e-5 * s["J12"], "the compute's column 6 (printed to 6 digits)")
+c.near("fix ave/time mode vector: impulse of interface 2-3", float(last[1][6]), s["J23"],
+       1e-5 * s["J23"], "the compute's column 6 (printed to 6 digits)")
 # the two-rod impact of the same rods for the contact duration
 ref = et.summary(et.run(a, "rod_impact/in.rod_impact",
                         {"dx": DX, "Limp": L, "Ltgt": L, "tend": 8, "out": 0},
