@@ -36,6 +36,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -52,8 +53,8 @@ static inline double advance_alpha(double a, double rate, double dt, double amin
 {
   return MIN(MAX(a + dt * rate, amin), amax);
 }
-// (changed with the per-atom prediction's layout: P_ALPHA added)
-static constexpr double RESTART_LAYOUT = 2026120202.0;
+// (changed with the per-atom prediction's layout: P_X added)
+static constexpr double RESTART_LAYOUT = 2026120401.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -602,6 +603,7 @@ void FixESPHIntegrate::post_run()
   for (int i = 0; i < atom->nlocal; i++) {
     save_normal_used(i, pred[i] + P_USED);
     pred[i][P_HASH] = fingerprint(i);
+    wrapped_position(i, pred[i] + P_X);
   }
   dt_used = pair->dt_step;
   fp_natoms = atom->natoms;
@@ -636,7 +638,7 @@ int FixESPHIntegrate::resume_check()
   state->fetch();
   if (ok)
     for (int i = 0; i < atom->nlocal; i++)
-      if (pred[i][P_HASH] != fingerprint(i)) {
+      if (pred[i][P_HASH] != fingerprint(i) || !same_position(i, pred[i] + P_X)) {
         ok = 0;
         break;
       }
@@ -664,11 +666,11 @@ int FixESPHIntegrate::resume_check()
 
 /* ----------------------------------------------------------------------
    fingerprint of the state of atom i: a 64-bit hash of the bits of every
-   per-atom quantity a step reads, stored as an integer-valued double (the
-   top 53 bits). Positions are taken as domain->pbc() will wrap them, so
-   that the wrap at the next setup or by write_restart changes nothing
-   (orthogonal boxes; in triclinic boxes the setup round trip through
-   lamda coordinates changes the bits and every run starts afresh).
+   per-atom quantity a step reads but the position, stored as an
+   integer-valued double (the top 53 bits). The position is compared apart
+   (same_position), to round-off of the box: commands such as balance take
+   every position through lamda coordinates and back, which changes the last
+   bits, and the run still continues.
 ------------------------------------------------------------------------- */
 
 static inline uint64_t hash_mix(uint64_t h, double value)
@@ -684,20 +686,7 @@ static inline uint64_t hash_mix(uint64_t h, double value)
 
 double FixESPHIntegrate::fingerprint(int i)
 {
-  double xw[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
-  if (!domain->triclinic) {
-    const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
-    for (int d = 0; d < 3; d++) {
-      if (!per[d]) continue;
-      if (xw[d] < domain->boxlo[d]) xw[d] += domain->prd[d];
-      if (xw[d] >= domain->boxhi[d]) {
-        xw[d] -= domain->prd[d];
-        xw[d] = MAX(xw[d], domain->boxlo[d]);
-      }
-    }
-  }
   uint64_t h = 0;
-  for (int d = 0; d < 3; d++) h = hash_mix(h, xw[d]);
   for (int d = 0; d < 3; d++) h = hash_mix(h, atom->v[i][d]);
   h = hash_mix(h, state->rmass[i]);
   h = hash_mix(h, state->rho[i]);
@@ -821,6 +810,42 @@ void FixESPHIntegrate::write_restart(FILE *fp)
   }
 }
 
+/* ----------------------------------------------------------------------
+   position of atom i as domain->pbc() will wrap it (orthogonal boxes), so
+   that the wrap at the next setup or by write_restart changes nothing
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::wrapped_position(int i, double *xw)
+{
+  for (int d = 0; d < 3; d++) xw[d] = atom->x[i][d];
+  if (domain->triclinic) return;
+  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  for (int d = 0; d < 3; d++) {
+    if (!per[d]) continue;
+    if (xw[d] < domain->boxlo[d]) xw[d] += domain->prd[d];
+    if (xw[d] >= domain->boxhi[d]) {
+      xw[d] -= domain->prd[d];
+      xw[d] = MAX(xw[d], domain->boxlo[d]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   true if atom i is at the position xw (wrapped_position) up to the
+   round-off of a trip through lamda coordinates: 16 ulp of the box extent
+------------------------------------------------------------------------- */
+
+bool FixESPHIntegrate::same_position(int i, const double *xw)
+{
+  double now[3];
+  wrapped_position(i, now);
+  for (int d = 0; d < 3; d++) {
+    const double scale = fabs(domain->boxlo[d]) + fabs(domain->boxhi[d]) + fabs(domain->prd[d]);
+    if (!(fabs(now[d] - xw[d]) <= 16.0 * DBL_EPSILON * scale)) return false;
+  }
+  return true;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void FixESPHIntegrate::restart(char *buf)
@@ -902,6 +927,7 @@ int FixESPHIntegrate::pack_restart(int i, double *buf)
     state->fetch();
     save_normal_used(i, buf + P_USED + 1);
     buf[P_HASH + 1] = fingerprint(i);
+    wrapped_position(i, buf + P_X + 1);
   }
   return NPRED + 1;
 }

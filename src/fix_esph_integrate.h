@@ -63,11 +63,11 @@ class FixESPHIntegrate : public Fix {
   // the predicted end-of-step state, made in initial_integrate and read by the pair during
   // the force computation; at the end of a run (and in restart files) the real-particle
   // normal, surface gap, gap rate and engagement that the last force computation used
-  // (P_USED .. P_USED + 5), the fingerprint of the atom's state (P_HASH), and the
-  // predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch; last, so that
-  // restart files written before it existed are still read)
+  // (P_USED .. P_USED + 5), the fingerprint of the atom's state but its position (P_HASH),
+  // the predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch) and the
+  // position the fingerprint belongs to (P_X .. P_X + 2, wrapped as the fingerprint)
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
-                       P_HASH = 19, P_ALPHA = 20, NPRED = 21;
+                       P_HASH = 19, P_ALPHA = 20, P_X = 21, NPRED = 24;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
   // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),
@@ -103,6 +103,8 @@ class FixESPHIntegrate : public Fix {
   void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
   double fingerprint(int);
+  void wrapped_position(int, double *);
+  bool same_position(int, const double *);
   void save_normal_used(int, double *);
 };
 

@@ -15,7 +15,8 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
            have left the periodic box since the last neighbour list build
 Variants against the uninterrupted run: split in 2 and 3 parts, a run 0 in between, the
-second part with pre no, start/stop, a loop of 5 run commands, write_restart between runs
+second part with pre no, start/stop, a loop of 5 run commands, balance between the parts,
+write_restart between runs
 and read_restart in a new process (in the same process after clear for the rod), a restart
 file written by the restart command in the middle of a run; on 1 and 2 MPI ranks.
 Checked: every thermo column at every common step (printed with 17 digits) and every atom's
@@ -101,6 +102,8 @@ def drivers(scene):
         "preno": [f"run {k}\nrun {r} pre no\n"],
         "startstop": [f"run {k} start 0 stop {NSTEPS}\nrun {r} start 0 stop {NSTEPS}\n"],
         "loop": [f"variable i loop 5\nlabel l\nrun {NSTEPS // 5}\nnext i\njump SELF l\n"],
+        # balance takes every position through lamda coordinates and back (last bits)
+        "balance": [f"run {k}\nbalance 1.0 shift x 5 1.0\nrun {r}\n"],
     }
     if scene in ("rod", "slabs"):
         # variables survive clear: restart in the same process
