@@ -338,6 +338,28 @@ void ESPHCheck::rigid_bodies(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int
     }
   }
   first_error(lmp, bad, msg);
+  // a rigid particle that moves with a velocity no fix applies: the contact sees it move
+  std::vector<int> movers;
+  for (const auto &f : lmp->modify->get_fix_list())
+    if (f != fix_int && f->time_integrate) movers.push_back(f->groupbit);
+  const double *const *v = lmp->atom->v;
+  tagint still = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(st->rmass[i] > 0.0) || !rigid[type[i]]) continue;
+    if (v[i][0] == 0.0 && v[i][1] == 0.0 && v[i][2] == 0.0) continue;
+    bool moved = false;
+    for (int gb : movers) moved = moved || (mask[i] & gb);
+    if (!moved && (still == 0 || tag[i] < still)) still = tag[i];
+  }
+  tagint still_all = 0;
+  MPI_Allreduce(&still, &still_all, 1, MPI_LMP_TAGINT, MPI_MAX, lmp->world);
+  if (still_all > 0 && lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        "Atom {} of a rigid type (pair_coeff ... rigid yes) has a velocity but no "
+                        "fix moves it: the contact takes that velocity as the wall's while the "
+                        "body stays in place; move it with e.g. fix move, or set its velocity to "
+                        "0",
+                        still_all);
   const auto r = global_set(lmp, rbodies);
   const auto d = global_set(lmp, dbodies);
   std::vector<int> both;

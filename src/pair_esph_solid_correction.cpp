@@ -73,7 +73,14 @@ void PairESPHSolid::correction()
       const Eigen::Matrix3d A = voigt_to_matrix(q + Q_A);
       double *B = hq[i] + qcol_b;
       Eigen::Matrix3d M, Minv, Bm;
-      if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, M, Minv)) {
+      double beta;
+      if (rmass[i] > 0.0 && correction_inverse(acc[i] + A_M, q[Q_RHO], dim, M, Minv, beta)) {
+        // a poorly conditioned M (beta < 1): the corrected B blended with the plain one, A
+        // (both torque-free under torquefree, so the blend is)
+        if (beta < 1.0) {
+          Minv *= beta;
+          for (int d = 0; d < 3; d++) Minv(d, d) += (1.0 - beta) / q[Q_RHO];
+        }
         if (correct_flag == CORRECT_BONETLOK) {
           Bm = q[Q_RHO] * A * Minv.transpose();
           // the correction stiffens a particle whose kernel support is cut (a free surface,
@@ -97,7 +104,13 @@ void PairESPHSolid::correction()
           // a flat face along the principal axes), so the free surfaces keep the plain
           // force and its stability
           const Eigen::Matrix3d AM = A * M.transpose();
-          Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
+          if (beta < 1.0) {
+            // undo the blend of Minv: S M^-T needs the exact inverse
+            const Eigen::Matrix3d Mi = M.inverse();
+            Bm = beta * (0.5 * (AM + AM.transpose()) * Mi.transpose()) + (1.0 - beta) * A;
+          } else {
+            Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
+          }
         }
       } else {
         Bm = A;

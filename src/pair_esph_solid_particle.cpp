@@ -261,8 +261,10 @@ void PairESPHSolid::finalize(int eflag)
         // velocity gradient L = G / rho (eqs. 15, 17), Jaumann-rate stress (eq. 18);
         // corrected: L = G Mm^-1, exact for linear velocity fields also at free surfaces
         Eigen::Matrix3d M, Minv;
-        if (correct_flag && correction_inverse(a + A_M, rho, dim, M, Minv))
-          L = L * Minv;
+        double beta;
+        if (correct_flag && correction_inverse(a + A_M, rho, dim, M, Minv, beta))
+          L = (beta < 1.0) ? Eigen::Matrix3d(beta * (L * Minv) + ((1.0 - beta) / rho) * L)
+                           : Eigen::Matrix3d(L * Minv);
         else
           L /= rho;
         jaumann_rate(L, sp, shear[type[i]], ds[i]);

@@ -107,19 +107,30 @@ inline double solid_gap(const double *qi, const double *qj, double dt)
   return contact_gap_pair(qi[Q_GAP] + dt * qi[Q_GAPV], qj[Q_GAP] + dt * qj[Q_GAPV]);
 }
 
+// conditioning of the gradient correction's M: r = |det M| / (|M|_F^2 rho), a lower bound of
+// its smallest singular value over rho; a full neighbourhood has r = 1/3, a face 1/4.5, a
+// corner of a cube 1/6. Below COND_LO the neighbourhood is nearly flat in one direction (a
+// body one particle thick) and the inverse would amplify noise without bound: the plain
+// gradient is used; up to COND_HI the two are blended, so that nothing switches abruptly
+static constexpr double COND_LO = 0.02, COND_HI = 0.05;
+
 /* ----------------------------------------------------------------------
    M of the correction from its sums (row major), the out-of-plane diagonal
-   set to rho, and its inverse; false where M is singular (a particle with
-   too few neighbours): then the plain gradient is used
+   set to rho, its inverse, and the weight beta of the corrected gradient
+   against the plain one (1 where M is well conditioned, falling to 0 from
+   COND_HI to COND_LO); false below COND_LO (the plain gradient is used)
 ------------------------------------------------------------------------- */
 
 inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matrix3d &M,
-                               Eigen::Matrix3d &Minv)
+                               Eigen::Matrix3d &Minv, double &beta)
 {
   M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
   for (int d = dim; d < 3; d++) M(d, d) = rho;
-  if (fabs(M.determinant()) <= 1.0e-6 * rho * rho * rho) return false;
+  const double det = fabs(M.determinant());
+  const double scale = rho * M.squaredNorm();
+  if (!(det > COND_LO * scale)) return false;
   Minv = M.inverse();
+  beta = (det < COND_HI * scale) ? (det / scale - COND_LO) / (COND_HI - COND_LO) : 1.0;
   return true;
 }
 
