@@ -222,7 +222,8 @@ void FixESPHBoundary::init()
                  "({}) but group {} now holds ({}): real particles were deleted, lost or given "
                  "other masses or body IDs (i_esph_body) since. Define fix esph/boundary after "
                  "the masses and body IDs are set; after delete_atoms or lost atoms, define it "
-                 "again (unfix, then fix) to generate the surface anew",
+                 "again (unfix, then fix) to take the bodies as they are now, with their "
+                 "boundary particles",
                  id, ESPHCheck::format_bodies(made_for), group->names[igroup],
                  ESPHCheck::format_bodies(now));
   }
