@@ -171,25 +171,51 @@ void PairESPHSolid::compute_normals()
         continue;
       const int p = (rmass[i] > 0.0) ? i : j;
       const int k = (p == i) ? j : i;
-      if (p >= nlocal && !newton_pair && p != i) continue;
       const double sgn = (k == i) ? 1.0 : -1.0;
-      add_normal_sums(acc[p], w, sgn, dx, hq[k] + Q_N);
-      if (qcol_n >= 0) add_cone_sums(acc[p], w, hq[k] + Q_N);
+      if (p < nlocal || newton_pair || p == i) {
+        add_normal_sums(acc[p], w, sgn, dx, hq[k] + Q_N);
+        if (qcol_n >= 0) add_cone_sums(acc[p], w, hq[k] + Q_N);
+      }
+      // boundary particle k: sum_p W (x_p - x_k) = -sgn dx W in its (otherwise unused)
+      // normal-sum slots, for the check of its normal below
+      if (k < nlocal || newton_pair || k == i)
+        for (int d = 0; d < 3; d++) acc[k][A_NSUM + d] -= w * sgn * dx[d];
     }
   }
   if (newton_pair) {
     comm_stage = COMM_NORMALS;
     comm->reverse_comm(this, (A_WSUM - A_NSUM + 1) + (GAP_END - A_GW) + (qcol_n >= 0 ? 6 : 0));
   }
+  // a boundary normal should point away from its body's real particles nearby: one that is
+  // more than 60 degrees off belongs to positions changed after fix esph/boundary made it
+  // (displace_atoms rotate), which do not carry the normals along
+  bigint nbad = 0, nchecked = 0;
   for (int i = 0; i < nlocal; i++) {
     if (rmass[i] == 0.0) {
       store_bnd_gap(i);
       hq[i][Q_GAP] = state->gap[i];
       hq[i][Q_GAPV] = state->gapv[i];
+      const double *c = acc[i] + A_NSUM;
+      const double *n = state->n[i];
+      const double cc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      if (cc > 0.0) {
+        nchecked++;
+        if (-(c[0] * n[0] + c[1] * n[1] + c[2] * n[2]) < NORMAL_CHECK_COS * cc) nbad++;
+      }
     } else {
       for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
     }
   }
+  bigint mine[2] = {nbad, nchecked}, all[2];
+  MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all[0] > NORMAL_CHECK_SHARE * all[1] && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid: {} of {} boundary particles have normals more than 60 "
+                   "degrees off the direction away from their body's particles: positions "
+                   "changed after fix esph/boundary (e.g. displace_atoms rotate) keep the old "
+                   "normals; rotate a body before defining fix esph/boundary, or set the "
+                   "normals (d2_esph_n) of its boundary particles",
+                   all[0], all[1]);
 
   // pass 2: gaps of real particles from their own boundary particles
   if (solid) {

@@ -50,6 +50,10 @@ static constexpr int GAP_END = 32;
 // 32..37: sum_k W_ik n_k (x) n_k over own boundary particles (Voigt), the cone of the
 // surface (contact normal cone)
 static constexpr int A_NN = 32;
+// the check of the boundary normals at a fresh start: a normal is off when its cosine with
+// the direction away from its body's real particles is below NORMAL_CHECK_COS; a warning
+// when more than NORMAL_CHECK_SHARE of them are
+static constexpr double NORMAL_CHECK_COS = 0.5, NORMAL_CHECK_SHARE = 0.05;
 // length that regularises the alignment score of two boundary particles, and below which
 // an open gap counts as touching (round-off of coinciding faces), in h0
 static constexpr double GAP_EPS = 1.0e-6;

@@ -460,6 +460,12 @@ CASES = [
     ("bf_single_particle_body",
      [R("ra", "region ra block -0.0001 0 0 0.0001 0 0.0001 units box")],
      "error:a single particle has no surface"),
+    # positions rotated after the boundary particles were made: their normals stay behind
+    ("bf_rotate_after_boundary",
+     [A("fix_bnd", "displace_atoms b rotate 0.0002 0 0 0 0 1 90 units box")],
+     "warning:degrees off the direction away from their body"),
+    ("bf_rotate_before_boundary",
+     [B("fix_bnd", "displace_atoms b rotate 0.0002 0 0 0 0 1 90 units box")], "runs"),
     ("bf_spacing_tenth", [R("fix_bnd", FB + "spacing 1e-5")],
      "error:have no particle of their own body within 3 x spacing"),
     # ---------------- the same errors on two MPI ranks ----------------
