@@ -11,6 +11,11 @@ strain rates of the last force computation are reused).
    over 0.2 -> 0.05 mm (measured 0.61; the paper's viscosity 0.50); energy drift 0.07 /
    0.044 / 0.036 % (checked < 0.1 %); contact time 7.794 us against the linear theory's
    7.791 (checked within 0.5 %). minmod (more diffusive) lies between: 0.49 m/s at 0.1 mm.
+   The same runs at 5 m/s (residual x 10, the linear limit, doc/bench_1d_order.md): order
+   0.674 (vanleer) and 0.512 (the paper's), checked within 0.06 of 2/3 and 0.05 of 1/2, the
+   theory of a step spread by a second- and a first-order error; the 50 m/s residual less
+   the linear one (the model's own non-linear residual, 0.030-0.045 m/s by the independent
+   solver bench/fv1d) checked in 0.025 ... 0.05 m/s at 0.1 mm (measured 0.035).
 2. 3D rods, the paper's scene at 0.25 mm: final impactor mean velocity 0.748 m/s against
    1.236 with the paper's viscosity and 0.63 of the 3D elastic reference (checked error
    < 0.2 m/s), contact time 8.614 us (reference 8.23; checked within 6 %, the paper's
@@ -31,11 +36,11 @@ c = et.Checks("reconstructed viscosity (visc/recon)")
 ROD = "rod_impact/in.rod_impact"
 
 
-def rod(pair_extra, dim=1, dx=0.1, np=1, tag=""):
+def rod(pair_extra, dim=1, dx=0.1, np=1, tag="", V=50.0):
     return et.summary(et.run(a, ROD, {"dim": dim, "dx": dx, "tend": 16.0 if dim == 3 else 12.0,
-                                      "out": 0, "thermo_every": 1000,
+                                      "out": 0, "thermo_every": 1000, "V": V,
                                       "pair_extra": pair_extra}, np=np,
-                             log=f"log.rod.{dim}.{dx}.{tag}.{np}"))
+                             log=f"log.rod.{dim}.{dx}.{tag}.{V:g}.{np}"))
 
 
 # --- 1. 1D convergence ---
@@ -62,6 +67,23 @@ c.near("1D 0.1 mm vanleer: contact time [us]", van[0.1]["contact_time_us"], 7.79
 c.true("1D 0.1 mm minmod: residual between vanleer's and the paper's",
        van[0.1]["v_impactor"] < mm["v_impactor"] < paper[0.1]["v_impactor"],
        "minmod limits more (measured 0.394 < 0.490 < 0.843 m/s)")
+
+# --- 1b. the linear limit (doc/bench_1d_order.md): the same runs at 5 m/s, residual x 10 ---
+# the model's non-linearity scales with the amplitude, a scheme's error on a linear wave does
+# not; the order of the linear part is the scheme's: h^(p/(p+1)) for a step spread by an
+# error of order p
+lin = {dx: 10.0 * rod("visc/recon vanleer", dx=dx, tag="van", V=5.0)["v_impactor"] for dx in (0.2, 0.1, 0.05)}
+lin_p = {dx: 10.0 * rod("", dx=dx, tag="paper", V=5.0)["v_impactor"] for dx in (0.2, 0.1, 0.05)}
+order_l = math.log(lin[0.2] / lin[0.05]) / math.log(4.0)
+order_lp = math.log(lin_p[0.2] / lin_p[0.05]) / math.log(4.0)
+print(f"INFO 1D linear limit, residual x 10: vanleer {lin}, paper's {lin_p}; orders {order_l:.3f}, {order_lp:.3f}")
+c.near("1D linear limit: residual order 0.2 -> 0.05 mm, vanleer", order_l, 2.0 / 3.0, 0.06,
+       "theory 2/3 for a second-order scheme (the finite-volume check bench/fv1d: 0.66-0.67); measured 0.674")
+c.near("1D linear limit: residual order 0.2 -> 0.05 mm, paper's viscosity", order_lp, 0.5, 0.05,
+       "theory 1/2 for a first-order viscosity; measured 0.512")
+c.near("1D 0.1 mm: non-linear part of the 50 m/s residual [m/s]", van[0.1]["v_impactor"] - lin[0.1], 0.0375,
+       0.0125, "the model's own residual at 50 m/s: 0.030-0.045 m/s by bench/fv1d (0.1 ... 0.003 mm); "
+       "measured 0.035")
 
 # --- 2. 3D rods, 0.25 mm, 1 and 2 ranks ---
 r1 = rod("visc/recon vanleer", dim=3, dx=0.25, tag="van")
