@@ -99,6 +99,13 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   int **firstneigh = list->firstneigh;
 
   const int iifrom = out.iifrom, iito = out.iito;
+  // x is one contiguous array (memory->create): atom j's position at 3 j
+  const double *const xflat = x ? x[0] : nullptr;
+  struct {
+    int j[NBLOCK];
+    double dx[NBLOCK][3], rsq[NBLOCK], w[NBLOCK], dw[NBLOCK];
+    bool in[NBLOCK];
+  } blk;
   for (int ii = iifrom; ii < iito; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
@@ -114,298 +121,329 @@ void PairESPHSolid::pair_loop(LoopOut &out)
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
 
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double dx[3] = {xi - x[j][0], yi - x[j][1], zi - x[j][2]};
-      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-      if (rsq >= cutsq_global) continue;
-      const double mj = rmass[j];
-      if (BND && mi == 0.0 && mj == 0.0) {
-        // two boundary particles: the surface gap between different bodies
-        if (solid && bi != body[j])
-          bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
-                       gap_eps);
-        continue;
+    // the neighbours in blocks of NBLOCK: first the pairs within the cutoff and, at
+    // constant h, their kernel values, then the physics of each pair. The square root and
+    // the division of the kernel of many pairs then overlap, instead of heading the chain
+    // of dependent operations of each pair (the same operations: the same results)
+    for (int j0 = 0; j0 < jnum; j0 += NBLOCK) {
+      const int jend = std::min(jnum, j0 + NBLOCK);
+      int nb = 0;
+      for (int jj = j0; jj < jend; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        const double *xj = xflat + 3 * j;
+        const double d0 = xi - xj[0], d1 = yi - xj[1], d2 = zi - xj[2];
+        const double rsq = d0 * d0 + d1 * d1 + d2 * d2;
+        if (rsq >= cutsq_global) continue;
+        blk.j[nb] = j;
+        blk.dx[nb][0] = d0;
+        blk.dx[nb][1] = d1;
+        blk.dx[nb][2] = d2;
+        blk.rsq[nb] = rsq;
+        nb++;
       }
-      const double *qj = hq[j];
+      if (!HVAR)
+        for (int b = 0; b < nb; b++)
+          blk.in[b] = kernel_eval(kernel, dim, norm0, hinv0, sqrt(blk.rsq[b]), blk.w[b], blk.dw[b]);
 
-      double hij, norm, hinv;
-      if (HVAR) {
-        hij = 0.5 * (qi[Q_H] + qj[Q_H]);
-        hinv = 1.0 / hij;
-        norm = kernel_norm(kernel, dim, hij);
-      } else {
-        hij = h0;
-        hinv = hinv0;
-        norm = norm0;
-      }
-      double w, dw;
-      if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
-      const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
-      const int jown = (newton_pair || j < nlocal);
-
-      if (BND && (mi == 0.0 || mj == 0.0)) {
-        // boundary particle k and real particle p of the same body
-        if (bi != body[j]) continue;
-        int k, p;
-        double sgn;
-        if (mi == 0.0) {
-          k = i;
-          p = j;
-          sgn = 1.0;
-        } else {
-          k = j;
-          p = i;
-          sgn = -1.0;
-        }
-        const double *qp = hq[p];
-        const double *qk = hq[k];
-        if (k < nlocal || newton_pair || k == i) {
-          // grad_k W_kp = sgn * g
-          double *ak = acc[k];
-          const double Vp = rmass[p] / qp[Q_RHO];
-          const double gk[3] = {sgn * g[0], sgn * g[1], sgn * g[2]};
-          for (int a = 0; a < 3; a++) {
-            const double va = Vp * qp[Q_V + a];
-            ak[B_A + 3 * a] += va * gk[0];
-            ak[B_A + 3 * a + 1] += va * gk[1];
-            ak[B_A + 3 * a + 2] += va * gk[2];
-            ak[B_B + a] += Vp * gk[a];
-            ak[B_VSUM + a] += Vp * w * qp[Q_V + a];
-            // x_p - x_k = -sgn * dx
-            const double xa = -sgn * Vp * dx[a];
-            ak[B_M + 3 * a] += xa * gk[0];
-            ak[B_M + 3 * a + 1] += xa * gk[1];
-            ak[B_M + 3 * a + 2] += xa * gk[2];
-            ak[B_XSUM + a] += xa * w;
-          }
-          ak[B_WSUM] += Vp * w;
-        }
-        if (p < nlocal || newton_pair || p == i) {
-          add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
-          if (solid) {
-            add_gap_sums(acc[p], w, qk, dt);
-            if (qcn >= 0) add_cone_sums(acc[p], w, qk + Q_N);
-          }
-        }
-        continue;
-      }
-
-      // two real particles
-      const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
-      // a rigid particle (pair_coeff ... rigid yes) meets only deformable ones of other
-      // bodies, as the mirror image of its partner: stress, sound speed and density of the
-      // partner, twice the normal relative velocity (below): the reaction of a rigid wall
-      const int ri = RIG && rigid[type[i]], rj = RIG && rigid[type[j]];
-      if ((ri || rj) && (!cross || (ri && rj))) continue;
-      const double *qa = ri ? qj : qi;
-      const double *qb = rj ? qi : qj;
-      double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
-      // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W, or with
-      // the correction (B_i + B_j) grad_i W, B = (sigma / rho) M^-T (Bonet and Lok 1999)
-      double Tg[3];
-      if (CORR == 2) {
-        const double *Bi = qa + qcol_b;
-        const double *Bj = qb + qcol_b;
-        for (int r = 0; r < 3; r++)
-          Tg[r] = (Bi[3 * r] + Bj[3 * r]) * g[0] + (Bi[3 * r + 1] + Bj[3 * r + 1]) * g[1] +
-              (Bi[3 * r + 2] + Bj[3 * r + 2]) * g[2];
-      } else {
-        const double *Ai = qa + Q_A;
-        const double *Aj = qb + Q_A;
-        const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
-                             Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
-        Tg[0] = T[0] * g[0] + T[3] * g[1] + T[4] * g[2];
-        Tg[1] = T[3] * g[0] + T[1] * g[1] + T[5] * g[2];
-        Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
-      }
-      double nc[3] = {0.0, 0.0, 0.0};
-      double vn = 0.0, xn = 0.0;
-      double vt[3] = {0.0, 0.0, 0.0};
-      if (cross) {
-        contact_normal(qi + Q_N, qj + Q_N, dx, nc);
-        if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
-        vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
-        xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
-        // the slip velocity (of i against j) for friction
-        if (FRIC)
-          for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
-        if (RIG && (ri || rj)) vn *= 2.0;
-        // only the normal relative velocity couples across the interface
-        vij[0] = vn * nc[0];
-        vij[1] = vn * nc[1];
-        vij[2] = vn * nc[2];
-      }
-
-      // Monaghan-Gingold artificial viscosity (eqs. 4-7)
-      const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
-      double pi_ij = 0.0;
-      if (vr < 0.0) {
-        // visc/recon: the velocities reconstructed to the pair's midpoint with the limited
-        // strain rates of both particles, v_i - D_i x_ij / 2 and v_j + D_j x_ij / 2, so that
-        // a linear velocity field has no viscosity (approaching pairs of one body only)
-        double vrv = vr;
-        if (VEXT && recon && !cross) vrv = std::min(recon_vr(vr, qi + qd, qj + qd, dx, recon), 0.0);
-        const double mu = hij * vrv / (rsq + eps * hij * hij);
-        double al = alpha, be = beta;
-        if (vswitch) {
-          // Morris-Monaghan switch: the mean of the two particles' alpha
-          al = 0.5 * (qa[QAL] + qb[QAL]);
-          be = beta_ratio * al;
-        }
-        pi_ij =
-            (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) / (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
-      }
-      // heating by the artificial viscosity and stress, half to each particle
-      double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
-      if (AST && !cross && (qi[Q_RFLAG] + qj[Q_RFLAG] > 0.0)) {
-        // Monaghan (2000) artificial stress f_ij^n (R_i + R_j): a repulsion between
-        // particles in tension, R = -epsilon sigma'/rho^2 in the principal frame
-        double wdp_inv = wdp_inv0;
-        if (HVAR) {
-          double wdp, dwdp;
-          kernel_eval(kernel, dim, norm, hinv, astress_dp, wdp, dwdp);
-          wdp_inv = 1.0 / wdp;
-        }
-        const double fn = MathSpecial::powint(w * wdp_inv, astress_n);
-        const double *Ri = qi + Q_R;
-        const double *Rj = qj + Q_R;
-        const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
-                             fn * (Ri[3] + Rj[3]), fn * (Ri[4] + Rj[4]), fn * (Ri[5] + Rj[5])};
-        const double Rg[3] = {R[0] * g[0] + R[3] * g[1] + R[4] * g[2],
-                              R[3] * g[0] + R[1] * g[1] + R[5] * g[2],
-                              R[4] * g[0] + R[5] * g[1] + R[2] * g[2]};
-        Tg[0] += Rg[0];
-        Tg[1] += Rg[1];
-        Tg[2] += Rg[2];
-        avh -= 0.5 * (vij[0] * Rg[0] + vij[1] * Rg[1] + vij[2] * Rg[2]);
-      }
-      const double mm = mi * mj * fconv;
-      double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
-                      mm * (Tg[2] - pi_ij * g[2])};
-
-      if (cross) {
-        double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
-        // with newton off a pair with a ghost partner is on two ranks: count it once
-        const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
-        double phi = 1.0;
-        int touching;
-        if (solid) {
-          const double gap = solid_gap(qi, qj, dt);
-          // touching: closed, or open by no more than round-off (faces that coincide in exact
-          // arithmetic are a round-off distance apart in a rotated scene); counted before
-          // the gate
-          touching = (gap <= gap_eps);
-          phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
-        } else {
-          // the paper's rule measures no gap: an interacting pair is a touching one
-          touching = contact_approach(vn, xn);
-        }
-        if (touching && count_pair) {
-          ntouch++;
-          tally_bodies(tally, bi, body[j])[0] += 1.0;
-        }
-        // solid: no tension across contact, a pair that would pull (or not push) does not
-        // interact at all (also not in the strain rate and energy, which would otherwise see
-        // work that no force does); paper: only approaching pairs interact
-        // (a pair with no force at all, e.g. stress-free bodies that touch at the start
-        // without artificial viscosity, interacts while it approaches: its strain rate
-        // builds the stress that pushes; without it the bodies would pass through)
-        if (solid ? (phi == 0.0 || fn > 0.0 || (fn == 0.0 && !contact_approach(vn, xn)))
-                  : !touching)
+      for (int b = 0; b < nb; b++) {
+        const int j = blk.j[b];
+        const double *dx = blk.dx[b];
+        const double rsq = blk.rsq[b];
+        const double mj = rmass[j];
+        if (BND && mi == 0.0 && mj == 0.0) {
+          // two boundary particles: the surface gap between different bodies
+          if (solid && bi != body[j])
+            bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
+                         gap_eps);
           continue;
-        // the coupling weight scales force, strain rate and heating alike, so that the
-        // work of the force is what the internal energy receives
-        fn *= phi;
-        avh *= phi;
-        for (int a = 0; a < 3; a++) vij[a] *= phi;
-        ff[0] = fn * nc[0];
-        ff[1] = fn * nc[1];
-        ff[2] = fn * nc[2];
-        if (FRIC) {
-          // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
-          // to each particle (below the slip speed at which that force would reverse the
-          // slip, the force that stops it)
-          const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
-          if (vt2 > 0.0) {
-            const double vtm = sqrt(vt2);
-            const double fstick = mm / (mi + mj) * vtm / (STICK_SHARE * dt);
-            const double ft = std::min(-friction * fn, fstick);
-            const double s = ft / vtm;
-            for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
-            avh += 0.5 * ft * vtm / mm;
+        }
+        const double *qj = hq[j];
+
+        double hij, norm, hinv;
+        if (HVAR) {
+          hij = 0.5 * (qi[Q_H] + qj[Q_H]);
+          hinv = 1.0 / hij;
+          norm = kernel_norm(kernel, dim, hij);
+        } else {
+          hij = h0;
+          hinv = hinv0;
+          norm = norm0;
+        }
+        double w, dw;
+        if (HVAR) {
+          if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
+        } else {
+          if (!blk.in[b]) continue;
+          w = blk.w[b];
+          dw = blk.dw[b];
+        }
+        const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+        const int jown = (newton_pair || j < nlocal);
+
+        if (BND && (mi == 0.0 || mj == 0.0)) {
+          // boundary particle k and real particle p of the same body
+          if (bi != body[j]) continue;
+          int k, p;
+          double sgn;
+          if (mi == 0.0) {
+            k = i;
+            p = j;
+            sgn = 1.0;
+          } else {
+            k = j;
+            p = i;
+            sgn = -1.0;
+          }
+          const double *qp = hq[p];
+          const double *qk = hq[k];
+          if (k < nlocal || newton_pair || k == i) {
+            // grad_k W_kp = sgn * g
+            double *ak = acc[k];
+            const double Vp = rmass[p] / qp[Q_RHO];
+            const double gk[3] = {sgn * g[0], sgn * g[1], sgn * g[2]};
+            for (int a = 0; a < 3; a++) {
+              const double va = Vp * qp[Q_V + a];
+              ak[B_A + 3 * a] += va * gk[0];
+              ak[B_A + 3 * a + 1] += va * gk[1];
+              ak[B_A + 3 * a + 2] += va * gk[2];
+              ak[B_B + a] += Vp * gk[a];
+              ak[B_VSUM + a] += Vp * w * qp[Q_V + a];
+              // x_p - x_k = -sgn * dx
+              const double xa = -sgn * Vp * dx[a];
+              ak[B_M + 3 * a] += xa * gk[0];
+              ak[B_M + 3 * a + 1] += xa * gk[1];
+              ak[B_M + 3 * a + 2] += xa * gk[2];
+              ak[B_XSUM + a] += xa * w;
+            }
+            ak[B_WSUM] += Vp * w;
+          }
+          if (p < nlocal || newton_pair || p == i) {
+            add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
+            if (solid) {
+              add_gap_sums(acc[p], w, qk, dt);
+              if (qcn >= 0) add_cone_sums(acc[p], w, qk + Q_N);
+            }
+          }
+          continue;
+        }
+
+        // two real particles
+        const int cross = BND && (contact != CONTACT_OFF) && (bi != body[j]);
+        // a rigid particle (pair_coeff ... rigid yes) meets only deformable ones of other
+        // bodies, as the mirror image of its partner: stress, sound speed and density of the
+        // partner, twice the normal relative velocity (below): the reaction of a rigid wall
+        const int ri = RIG && rigid[type[i]], rj = RIG && rigid[type[j]];
+        if ((ri || rj) && (!cross || (ri && rj))) continue;
+        const double *qa = ri ? qj : qi;
+        const double *qb = rj ? qi : qj;
+        double vij[3] = {qi[Q_V] - qj[Q_V], qi[Q_V + 1] - qj[Q_V + 1], qi[Q_V + 2] - qj[Q_V + 2]};
+        // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W, or with
+        // the correction (B_i + B_j) grad_i W, B = (sigma / rho) M^-T (Bonet and Lok 1999)
+        double Tg[3];
+        if (CORR == 2) {
+          const double *Bi = qa + qcol_b;
+          const double *Bj = qb + qcol_b;
+          for (int r = 0; r < 3; r++)
+            Tg[r] = (Bi[3 * r] + Bj[3 * r]) * g[0] + (Bi[3 * r + 1] + Bj[3 * r + 1]) * g[1] +
+                (Bi[3 * r + 2] + Bj[3 * r + 2]) * g[2];
+        } else {
+          const double *Ai = qa + Q_A;
+          const double *Aj = qb + Q_A;
+          const double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
+                               Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
+          Tg[0] = T[0] * g[0] + T[3] * g[1] + T[4] * g[2];
+          Tg[1] = T[3] * g[0] + T[1] * g[1] + T[5] * g[2];
+          Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
+        }
+        double nc[3] = {0.0, 0.0, 0.0};
+        double vn = 0.0, xn = 0.0;
+        double vt[3] = {0.0, 0.0, 0.0};
+        if (cross) {
+          contact_normal(qi + Q_N, qj + Q_N, dx, nc);
+          if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
+          vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
+          xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
+          // the slip velocity (of i against j) for friction
+          if (FRIC)
+            for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
+          if (RIG && (ri || rj)) vn *= 2.0;
+          // only the normal relative velocity couples across the interface
+          vij[0] = vn * nc[0];
+          vij[1] = vn * nc[1];
+          vij[2] = vn * nc[2];
+        }
+
+        // Monaghan-Gingold artificial viscosity (eqs. 4-7)
+        const double vr = vij[0] * dx[0] + vij[1] * dx[1] + vij[2] * dx[2];
+        double pi_ij = 0.0;
+        if (vr < 0.0) {
+          // visc/recon: the velocities reconstructed to the pair's midpoint with the limited
+          // strain rates of both particles, v_i - D_i x_ij / 2 and v_j + D_j x_ij / 2, so that
+          // a linear velocity field has no viscosity (approaching pairs of one body only)
+          double vrv = vr;
+          if (VEXT && recon && !cross)
+            vrv = std::min(recon_vr(vr, qi + qd, qj + qd, dx, recon), 0.0);
+          const double mu = hij * vrv / (rsq + eps * hij * hij);
+          double al = alpha, be = beta;
+          if (vswitch) {
+            // Morris-Monaghan switch: the mean of the two particles' alpha
+            al = 0.5 * (qa[QAL] + qb[QAL]);
+            be = beta_ratio * al;
+          }
+          pi_ij = (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) /
+              (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
+        }
+        // heating by the artificial viscosity and stress, half to each particle
+        double avh = 0.5 * pi_ij * (vij[0] * g[0] + vij[1] * g[1] + vij[2] * g[2]);
+        if (AST && !cross && (qi[Q_RFLAG] + qj[Q_RFLAG] > 0.0)) {
+          // Monaghan (2000) artificial stress f_ij^n (R_i + R_j): a repulsion between
+          // particles in tension, R = -epsilon sigma'/rho^2 in the principal frame
+          double wdp_inv = wdp_inv0;
+          if (HVAR) {
+            double wdp, dwdp;
+            kernel_eval(kernel, dim, norm, hinv, astress_dp, wdp, dwdp);
+            wdp_inv = 1.0 / wdp;
+          }
+          const double fn = MathSpecial::powint(w * wdp_inv, astress_n);
+          const double *Ri = qi + Q_R;
+          const double *Rj = qj + Q_R;
+          const double R[6] = {fn * (Ri[0] + Rj[0]), fn * (Ri[1] + Rj[1]), fn * (Ri[2] + Rj[2]),
+                               fn * (Ri[3] + Rj[3]), fn * (Ri[4] + Rj[4]), fn * (Ri[5] + Rj[5])};
+          const double Rg[3] = {R[0] * g[0] + R[3] * g[1] + R[4] * g[2],
+                                R[3] * g[0] + R[1] * g[1] + R[5] * g[2],
+                                R[4] * g[0] + R[5] * g[1] + R[2] * g[2]};
+          Tg[0] += Rg[0];
+          Tg[1] += Rg[1];
+          Tg[2] += Rg[2];
+          avh -= 0.5 * (vij[0] * Rg[0] + vij[1] * Rg[1] + vij[2] * Rg[2]);
+        }
+        const double mm = mi * mj * fconv;
+        double ff[3] = {mm * (Tg[0] - pi_ij * g[0]), mm * (Tg[1] - pi_ij * g[1]),
+                        mm * (Tg[2] - pi_ij * g[2])};
+
+        if (cross) {
+          double fn = ff[0] * nc[0] + ff[1] * nc[1] + ff[2] * nc[2];
+          // with newton off a pair with a ghost partner is on two ranks: count it once
+          const int count_pair = newton_pair || j < nlocal || tag[i] < tag[j];
+          double phi = 1.0;
+          int touching;
+          if (solid) {
+            const double gap = solid_gap(qi, qj, dt);
+            // touching: closed, or open by no more than round-off (faces that coincide in exact
+            // arithmetic are a round-off distance apart in a rotated scene); counted before
+            // the gate
+            touching = (gap <= gap_eps);
+            phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
+          } else {
+            // the paper's rule measures no gap: an interacting pair is a touching one
+            touching = contact_approach(vn, xn);
+          }
+          if (touching && count_pair) {
+            ntouch++;
+            tally_bodies(tally, bi, body[j])[0] += 1.0;
+          }
+          // solid: no tension across contact, a pair that would pull (or not push) does not
+          // interact at all (also not in the strain rate and energy, which would otherwise see
+          // work that no force does); paper: only approaching pairs interact
+          // (a pair with no force at all, e.g. stress-free bodies that touch at the start
+          // without artificial viscosity, interacts while it approaches: its strain rate
+          // builds the stress that pushes; without it the bodies would pass through)
+          if (solid ? (phi == 0.0 || fn > 0.0 || (fn == 0.0 && !contact_approach(vn, xn)))
+                    : !touching)
+            continue;
+          // the coupling weight scales force, strain rate and heating alike, so that the
+          // work of the force is what the internal energy receives
+          fn *= phi;
+          avh *= phi;
+          for (int a = 0; a < 3; a++) vij[a] *= phi;
+          ff[0] = fn * nc[0];
+          ff[1] = fn * nc[1];
+          ff[2] = fn * nc[2];
+          if (FRIC) {
+            // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
+            // to each particle (below the slip speed at which that force would reverse the
+            // slip, the force that stops it)
+            const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
+            if (vt2 > 0.0) {
+              const double vtm = sqrt(vt2);
+              const double fstick = mm / (mi + mj) * vtm / (STICK_SHARE * dt);
+              const double ft = std::min(-friction * fn, fstick);
+              const double s = ft / vtm;
+              for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
+              avh += 0.5 * ft * vtm / mm;
+            }
+          }
+          // transmitted compressive normal force; with newton off a pair with a ghost
+          // partner is seen by two ranks
+          const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
+          fcont += fpair;
+          auto &tb = tally_bodies(tally, bi, body[j]);
+          tb[2] += fpair;
+          if (count_pair) {
+            ncontact++;
+            tb[1] += 1.0;
+          }
+          // per-atom contact output of compute esph/atom, only when one asks for it
+          if (atom_contact_flag) {
+            catom[i][0] += 1.0;
+            catom[i][1] -= fn;
+            if (jown) {
+              catom[j][0] += 1.0;
+              catom[j][1] -= fn;
+            }
           }
         }
-        // transmitted compressive normal force; with newton off a pair with a ghost
-        // partner is seen by two ranks
-        const double fpair = (newton_pair || j < nlocal) ? -fn : -0.5 * fn;
-        fcont += fpair;
-        auto &tb = tally_bodies(tally, bi, body[j]);
-        tb[2] += fpair;
-        if (count_pair) {
-          ncontact++;
-          tb[1] += 1.0;
-        }
-        // per-atom contact output of compute esph/atom, only when one asks for it
-        if (atom_contact_flag) {
-          catom[i][0] += 1.0;
-          catom[i][1] -= fn;
-          if (jown) {
-            catom[j][0] += 1.0;
-            catom[j][1] -= fn;
-          }
-        }
-      }
 
-      fxi += ff[0];
-      fyi += ff[1];
-      fzi += ff[2];
+        fxi += ff[0];
+        fyi += ff[1];
+        fzi += ff[2];
 
-      // G = sum_j m_j (v_j - v_i) (x) grad_i W, for i and j alike
-      for (int a = 0; a < 3; a++) {
-        const double wa = -mj * vij[a];
-        gi[3 * a] += wa * g[0];
-        gi[3 * a + 1] += wa * g[1];
-        gi[3 * a + 2] += wa * g[2];
-      }
-      avhi += mj * avh;
-      // x_j - x_i = -dx
-      if (CORR == 1) add_outer(mci, -mj, dx, g);
-      double heat = 0.0;
-      if (HEAT && !cross) {
-        // artificial heat transfer (eqs. 8-10), conservative pairwise form
-        const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
-        const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
-        heat = 2.0 * zbar / rbar * (qi[Q_E] - qj[Q_E]) * dw * rsq / (rsq + eps * hij * hij);
-        heati += mj * heat;
-      }
-
-      // XSPH (Monaghan 1989): particles move with the velocity smoothed over their
-      // own body, xsph_i = sum_j m_j / rhobar_ij (v_j - v_i) W_ij
-      double wx = 0.0;
-      if (XSPH && !cross) {
-        wx = w / (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
-        xsi[0] -= mj * wx * vij[0];
-        xsi[1] -= mj * wx * vij[1];
-        xsi[2] -= mj * wx * vij[2];
-      }
-
-      if (jown) {
-        double *aj = acc[j];
-        if (XSPH && !cross)
-          for (int a = 0; a < 3; a++) aj[A_XSPH + a] += mi * wx * vij[a];
-        f[j][0] -= ff[0];
-        f[j][1] -= ff[1];
-        f[j][2] -= ff[2];
+        // G = sum_j m_j (v_j - v_i) (x) grad_i W, for i and j alike
         for (int a = 0; a < 3; a++) {
-          const double wa = -mi * vij[a];
-          aj[A_G + 3 * a] += wa * g[0];
-          aj[A_G + 3 * a + 1] += wa * g[1];
-          aj[A_G + 3 * a + 2] += wa * g[2];
+          const double wa = -mj * vij[a];
+          gi[3 * a] += wa * g[0];
+          gi[3 * a + 1] += wa * g[1];
+          gi[3 * a + 2] += wa * g[2];
         }
-        aj[A_AVHEAT] += mi * avh;
-        if (HEAT) aj[A_HEAT] -= mi * heat;
-        if (CORR == 1) add_outer(aj + A_M, -mi, dx, g);
+        avhi += mj * avh;
+        // x_j - x_i = -dx
+        if (CORR == 1) add_outer(mci, -mj, dx, g);
+        double heat = 0.0;
+        if (HEAT && !cross) {
+          // artificial heat transfer (eqs. 8-10), conservative pairwise form
+          const double zbar = 0.5 * (qi[Q_ZETA] + qj[Q_ZETA]);
+          const double rbar = 0.5 * (qi[Q_RHO] + qj[Q_RHO]);
+          heat = 2.0 * zbar / rbar * (qi[Q_E] - qj[Q_E]) * dw * rsq / (rsq + eps * hij * hij);
+          heati += mj * heat;
+        }
+
+        // XSPH (Monaghan 1989): particles move with the velocity smoothed over their
+        // own body, xsph_i = sum_j m_j / rhobar_ij (v_j - v_i) W_ij
+        double wx = 0.0;
+        if (XSPH && !cross) {
+          wx = w / (0.5 * (qi[Q_RHO] + qj[Q_RHO]));
+          xsi[0] -= mj * wx * vij[0];
+          xsi[1] -= mj * wx * vij[1];
+          xsi[2] -= mj * wx * vij[2];
+        }
+
+        if (jown) {
+          double *aj = acc[j];
+          if (XSPH && !cross)
+            for (int a = 0; a < 3; a++) aj[A_XSPH + a] += mi * wx * vij[a];
+          f[j][0] -= ff[0];
+          f[j][1] -= ff[1];
+          f[j][2] -= ff[2];
+          for (int a = 0; a < 3; a++) {
+            const double wa = -mi * vij[a];
+            aj[A_G + 3 * a] += wa * g[0];
+            aj[A_G + 3 * a + 1] += wa * g[1];
+            aj[A_G + 3 * a + 2] += wa * g[2];
+          }
+          aj[A_AVHEAT] += mi * avh;
+          if (HEAT) aj[A_HEAT] -= mi * heat;
+          if (CORR == 1) add_outer(aj + A_M, -mi, dx, g);
+        }
       }
     }
     f[i][0] += fxi;

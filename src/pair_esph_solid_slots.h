@@ -54,6 +54,8 @@ static constexpr int A_NN = 32;
 // the direction away from its body's real particles is below NORMAL_CHECK_COS; a warning
 // when more than NORMAL_CHECK_SHARE of them are
 static constexpr double NORMAL_CHECK_COS = 0.5, NORMAL_CHECK_SHARE = 0.05;
+// neighbours per block of the pair loop (distances and kernel first, then the pairs)
+static constexpr int NBLOCK = 64;
 // length that regularises the alignment score of two boundary particles, and below which
 // an open gap counts as touching (round-off of coinciding faces), in h0
 static constexpr double GAP_EPS = 1.0e-6;
