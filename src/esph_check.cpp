@@ -371,6 +371,48 @@ void ESPHCheck::rigid_bodies(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int
                     both[0]);
 }
 
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double spacing, int dim)
+{
+  Atom *atom = lmp->atom;
+  st->fetch();
+  const int *type = atom->type;
+  const double vol0 = (spacing > 0.0) ? pow(spacing, dim) : 0.0;
+  const double off[2] = {DENSITY_OFF, VOLUME_OFF};
+  // count, smallest and largest ratio of the particles off: density, volume
+  bigint n[2] = {0, 0}, nall[2];
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, loall[2], hiall[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(st->rmass[i] > 0.0) || !(st->rho[i] > 0.0)) continue;
+    const double r[2] = {st->rho[i] / eos[type[i]].rho0,
+                         vol0 > 0.0 ? st->rmass[i] / st->rho[i] / vol0 : 1.0};
+    for (int k = 0; k < 2; k++)
+      if (r[k] > off[k] || r[k] < 1.0 / off[k]) {
+        n[k]++;
+        lo[k] = MIN(lo[k], r[k]);
+        hi[k] = MAX(hi[k], r[k]);
+      }
+  }
+  MPI_Allreduce(n, nall, 2, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  MPI_Allreduce(lo, loall, 2, MPI_DOUBLE, MPI_MIN, lmp->world);
+  MPI_Allreduce(hi, hiall, 2, MPI_DOUBLE, MPI_MAX, lmp->world);
+  if (lmp->comm->me != 0) return;
+  if (nall[0] > 0)
+    lmp->error->warning(FLERR,
+                        "{} real particles start the run with a density d_esph_rho of {:.3g} to "
+                        "{:.3g} x the rho0 of their type (a strain of that size is no elastic "
+                        "state): pair_coeff rho0 changed for particles that exist, or d_esph_rho "
+                        "set by hand; set d_esph_rho (and the masses) for the new rho0",
+                        nall[0], loall[0], hiall[0]);
+  if (nall[1] > 0)
+    lmp->error->warning(FLERR,
+                        "{} real particles have a volume m / d_esph_rho of {:.3g} to {:.3g} x "
+                        "spacing^{} of fix esph/boundary (a particle's volume is about that): "
+                        "check the masses, rho0 x spacing^{} in the mass unit of the units style",
+                        nall[1], loall[1], hiall[1], dim, dim);
+}
+
 /* ----------------------------------------------------------------------
    every rank finds for each of its real group particles the nearest
    same-body neighbour among its own particles (no gather: memory O(N/P)) in a

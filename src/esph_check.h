@@ -85,6 +85,14 @@ namespace ESPHCheck {
   // group has no real particles, ISOLATED if most have no neighbour within MAX_RATIO
   double spacing_ratio(LAMMPS *lmp, ESPHState *state, int groupbit, double spacing);
 
+  // warnings at the start of a run: real particles whose density is far from the rho0 of
+  // their type (outside [1/DENSITY_OFF, DENSITY_OFF] x rho0: pair_coeff rho0 changed between
+  // runs), and, with spacing > 0 (fix esph/boundary), whose volume m / rho is far from
+  // spacing^dim (outside [1/VOLUME_OFF, VOLUME_OFF]: a mass in the wrong unit)
+  void volumes(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double spacing, int dim);
+
+  static constexpr double DENSITY_OFF = 1.5;
+  static constexpr double VOLUME_OFF = 3.0;
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
   static constexpr double MAX_RATIO = 3.0;

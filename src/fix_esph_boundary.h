@@ -35,6 +35,8 @@ class FixESPHBoundary : public Fix {
   int setmask() override;
   void init() override;
   double compute_scalar() override;
+  // the particle spacing the boundary particles were placed for
+  double get_spacing() const { return spacing; }
 
  protected:
   double spacing;    // particle spacing of the bodies

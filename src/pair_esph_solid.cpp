@@ -31,6 +31,7 @@
 #include "esph_strength.h"
 #include "esph_threads.h"
 #include "fix.h"
+#include "fix_esph_boundary.h"
 #include "fix_esph_integrate.h"
 #include "force.h"
 #include "info.h"
@@ -47,6 +48,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace ESPH;
@@ -66,7 +69,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   restartinfo = 0;
   one_coeff = 0;
   manybody_flag = 0;
-  comm_forward = 27;    // 12 + 6 contact geometry + 2 heat + 1 switch + 6 reconstruction
+  comm_forward = FORWARD_MAX;
   comm_reverse = NACC;
 
   h0 = 0.0;
@@ -188,6 +191,8 @@ void PairESPHSolid::settings(int narg, char **arg)
   if (h0 <= 0.0)
     error->all(FLERR, 1, "Pair esph/solid smoothing length h must be > 0, got {}", arg[0]);
 
+  // keywords given that only contact solid reads (a warning under the other rules)
+  std::vector<std::string> solid_only;
   int iarg = 1;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "kernel") == 0) {
@@ -322,6 +327,7 @@ void PairESPHSolid::settings(int narg, char **arg)
       xsph_flag = (xsph_eps > 0.0);
       iarg += 2;
     } else if (strcmp(arg[iarg], "onset") == 0) {
+      solid_only.emplace_back("onset");
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid onset", error);
       onset = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
       if (onset < 0)
@@ -348,6 +354,7 @@ void PairESPHSolid::settings(int narg, char **arg)
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "gap/tol") == 0) {
+      solid_only.emplace_back("gap/tol");
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid gap/tol", error);
       gaptol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (gaptol < 0.0)
@@ -388,6 +395,13 @@ void PairESPHSolid::settings(int narg, char **arg)
                    "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "
                    "approaching pairs interact) then gains energy at every switch (+67 % in "
                    "the 1D rod impact); use contact solid or a visc alpha > 0");
+  // the gate of contact solid: its keywords mean nothing to the other rules
+  for (const auto &word : solid_only)
+    if (contact != CONTACT_SOLID && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair esph/solid {} applies to contact solid only (the gap gate); contact "
+                     "{} ignores it: drop {} or use contact solid",
+                     word, contact == CONTACT_PAPER ? "paper" : "off", word);
   if (cone_flag && contact != CONTACT_SOLID && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid contact/normal cone applies to contact solid only; contact "
@@ -626,6 +640,12 @@ void PairESPHSolid::setup()
   // the state the run starts from, and the arrangement of the particles (one pass each)
   ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT, units);
   ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim);
+  {
+    const auto bfix = modify->get_fix_by_style("^esph/boundary$");
+    const double spacing = bfix.empty() ? 0.0
+                                        : dynamic_cast<FixESPHBoundary *>(bfix[0])->get_spacing();
+    ESPHCheck::volumes(lmp, state, eos, spacing, dim);
+  }
   if (contact != CONTACT_OFF)
     ESPHCheck::contact_bodies(lmp, state, contact == CONTACT_PAPER ? "paper" : "solid");
   bigint nb = 0;
@@ -795,6 +815,11 @@ void PairESPHSolid::compute(int eflag, int vflag)
   comm_bnd = bnd;
   nforward = 12 + (bnd ? 6 + (qcol_n >= 0 ? 6 : 0) : 0) + (heat_flag ? 2 : 0) +
       (vswitch_flag ? 1 : 0) + (recon_flag ? 6 : 0);
+  // the buffers of the communication are sized by comm_forward
+  if (nforward > comm_forward)
+    error->one(FLERR,
+               "Pair esph/solid: internal error, {} values per atom to communicate, {} sized",
+               nforward, comm_forward);
   if (bnd && !normals_valid) compute_normals();
   hoist();
   comm_stage = COMM_HOIST;

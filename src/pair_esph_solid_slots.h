@@ -54,6 +54,9 @@ static constexpr int A_NN = 32;
 // the direction away from its body's real particles is below NORMAL_CHECK_COS; a warning
 // when more than NORMAL_CHECK_SHARE of them are
 static constexpr double NORMAL_CHECK_COS = 0.5, NORMAL_CHECK_SHARE = 0.05;
+// values per atom of the largest forward communication (the hoisted quantities): 12 +
+// 6 contact geometry + 6 normal cone + 2 heat + 1 switch + 6 reconstruction
+static constexpr int FORWARD_MAX = 12 + 6 + 6 + 2 + 1 + 6;
 // neighbours per block of the pair loop (distances and kernel first, then the pairs)
 static constexpr int NBLOCK = 64;
 // length that regularises the alignment score of two boundary particles, and below which

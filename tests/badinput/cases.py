@@ -168,6 +168,16 @@ CASES = [
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),
     ("ps_onset_default", [K("pair", " onset 10")], "same"),
+    # masses and densities that do not fit the particle spacing or rho0 (warnings at setup)
+    ("pc_mass_heavy_body", [R("mass", "set group all mass 7.85e-9"), A("mass", "set group b mass 3.14e-8")],
+     "warning:have a volume m / d_esph_rho of 4 to 4 x"),
+    ("pc_rho0_changed_between_runs",
+     [A("run", "pair_coeff * * rho0 2700 shear 26e9 eos linear 75e9"), A("run", "run 2")],
+     "warning:x the rho0 of their type"),
+    # the gate's keywords under the rules that have no gate
+    ("ps_gaptol_paper", [K("pair", " contact paper gap/tol 0.5")],
+     "warning:gap/tol applies to contact solid only"),
+    ("ps_onset_off", [K("pair", " contact off onset 50")], "warning:onset applies to contact solid only"),
     ("ps_cnormal_missing", [K("pair", " contact/normal")], "error:missing argument"),
     ("ps_cnormal_bogus", [K("pair", " contact/normal sharp")], "error:contact/normal must be cone or mean"),
     ("ps_cnormal_mean", [K("pair", " contact/normal mean")], "same"),
@@ -483,6 +493,13 @@ CASES = [
     ("mpi_fix_nve", [A("fix_bnd", "fix nve all nve")], "error:also integrates", 2),
     ("mpi_dimension_1", [K("pair", " dimension 1")], "error:a 1D kernel needs", 2),
     ("mpi_fix_before_pair", [M("fix_int", "pair")], "runs", 2),
+    # every optional forward-communicated quantity at once (cone, heat, reconstruction: 32
+    # values per atom) in a run that continues another: the communication buffers hold them
+    ("mpi_all_forward_split", [K("pair", " contact/normal cone visc/recon vanleer heat 0.1 1.0"),
+                               A("run", "run 10")], "runs", 2),
+    ("mpi_all_forward_switch_split",
+     [K("pair", " contact/normal cone visc/switch 0.1 0.2 visc/recon vanleer heat 0.1 1.0"),
+      A("run", "run 10")], "runs", 2),
 ]
 
 
