@@ -413,6 +413,38 @@ void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double
                         nall[1], loall[1], hiall[1], dim, dim);
 }
 
+/* ---------------------------------------------------------------------- */
+
+void ESPHCheck::unintegrated(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int *rigid)
+{
+  const int *mask = lmp->atom->mask;
+  const int *type = lmp->atom->type;
+  st->fetch();
+  bigint n = 0, nall;
+  std::vector<int> bodies;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (st->rmass[i] > 0.0 && !rigid[type[i]] && !(mask[i] & fix_int->groupbit)) {
+      n++;
+      bodies.push_back(st->body[i]);
+    }
+  MPI_Allreduce(&n, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  if (nall == 0) return;
+  bodies = global_set(lmp, bodies);
+  std::string list;
+  for (size_t k = 0; k < bodies.size() && k < 5; k++)
+    list += fmt::format("{}{}", k ? " " : "", bodies[k]);
+  if (bodies.size() > 5) list += " ...";
+  // a frozen body is a legal model (a soft wall, examples/anvil wall frozen): said in the
+  // log, not warned
+  if (lmp->comm->me == 0)
+    utils::logmesg(lmp,
+                   "ESPH: {} real particles of deformable types (bodies {}) are outside the "
+                   "group of fix esph/integrate {}: their state is frozen (density, stress and "
+                   "energy never change), a wall that pushes but neither deforms nor heats; for "
+                   "a rigid wall give their type pair_coeff ... rigid yes\n",
+                   nall, list, fix_int->id);
+}
+
 /* ----------------------------------------------------------------------
    every rank finds for each of its real group particles the nearest
    same-body neighbour among its own particles (no gather: memory O(N/P)) in a

@@ -80,6 +80,10 @@ namespace ESPHCheck {
   // mix rigid and deformable real particles
   void rigid_bodies(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
 
+  // deformable real particles (types without rigid yes) outside the group of fix
+  // esph/integrate: nothing updates their density, stress and energy (said in the log)
+  void unintegrated(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
+
   // median distance from each real particle of the group to its nearest real
   // neighbour of the same body, in units of spacing (capped at MAX_RATIO); -1 if the
   // group has no real particles, ISOLATED if most have no neighbour within MAX_RATIO

@@ -83,6 +83,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
 
   spacing = 0.0;
+  reused = 0;
   smooth = 1.0;
   fit = FIT_DEFAULT;
   btype = 0;
@@ -256,7 +257,16 @@ void FixESPHBoundary::init()
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/boundary group {} has no boundary particles",
                group->names[igroup]);
   for (int b : real_bodies)
-    if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b))
+    if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b) && reused > 0)
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Body {} has real particles but no boundary particles in fix esph/boundary: "
+                 "the fix found {} boundary particles in group {} and uses them (it makes "
+                 "none when some exist), and none is of body {} (a body added since they were "
+                 "made?): delete the existing boundary particles (a group of the zero-mass "
+                 "particles, delete_atoms) before defining the fix, so that it makes them for "
+                 "every body",
+                 b, reused, group->names[igroup], b);
+    else if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b))
       error->all(FLERR, Error::NOLASTLINE,
                  "Body {} has real particles but no boundary particles in fix esph/boundary "
                  "(a body gets them where its particles have a surface: a single particle has "
@@ -405,6 +415,7 @@ void FixESPHBoundary::generate()
   if (nexist_all > 0) {
     if (comm->me == 0)
       utils::logmesg(lmp, "Fix esph/boundary: using {} existing boundary particles\n", nexist_all);
+    reused = nexist_all;
     return;
   }
 

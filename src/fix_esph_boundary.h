@@ -48,6 +48,7 @@ class FixESPHBoundary : public Fix {
   class ESPHState *state;
   // real particles per body the boundary particles were generated (or found) for
   std::map<int, bigint> made_for;
+  bigint reused;    // boundary particles found at the definition and used (none made)
 
   void generate();
   void fit_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);

@@ -576,6 +576,7 @@ void PairESPHSolid::init_style()
                "Pair esph/solid rigid types (pair_coeff ... rigid yes) need a contact rule "
                "(contact solid or paper), not contact off");
   if (rigid_flag) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
+  ESPHCheck::unintegrated(lmp, state, fix_int, rigid);
   if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
     // contact needs boundary particles only when there is more than one body
     int lmin = 1 << 30, lmax = -(1 << 30);

@@ -168,6 +168,13 @@ CASES = [
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),
     ("ps_onset_default", [K("pair", " onset 10")], "same"),
+    # a body added between runs while the old boundary particles remain: the fix uses them
+    ("bf_body_added_reused",
+     [A("run", "unfix bnd"), A("run", "region rc block 0.0004 0.0006 -0.0001 0.0001 -0.0001 0.0001 units box"),
+      A("run", "create_atoms 2 region rc"), A("run", "group c region rc"),
+      A("run", "set group c mass 7.85e-9"), A("run", "set group c i_esph_body 3"),
+      A("run", "fix bnd all esph/boundary spacing 1e-4"), A("run", "run 2")],
+     "error:a body added since they were made"),
     # masses and densities that do not fit the particle spacing or rho0 (warnings at setup)
     ("pc_mass_heavy_body", [R("mass", "set group all mass 7.85e-9"), A("mass", "set group b mass 3.14e-8")],
      "warning:have a volume m / d_esph_rho of 4 to 4 x"),
