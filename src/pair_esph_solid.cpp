@@ -646,6 +646,14 @@ void PairESPHSolid::setup()
     const double spacing = bfix.empty() ? 0.0
                                         : dynamic_cast<FixESPHBoundary *>(bfix[0])->get_spacing();
     ESPHCheck::volumes(lmp, state, eos, spacing, dim);
+    // the artificial stress's dp is the particle spacing (Monaghan 2000)
+    if (astress_flag && spacing > 0.0 && comm->me == 0 &&
+        (astress_dp > 2.0 * spacing || astress_dp < 0.5 * spacing))
+      error->warning(FLERR,
+                     "Pair esph/solid artstress dp = {} is {:.3g} x the spacing {} of fix "
+                     "esph/boundary: dp is the particle spacing (W(dp) scales the repulsion); "
+                     "set dp to the spacing",
+                     astress_dp, astress_dp / spacing, spacing);
   }
   if (contact != CONTACT_OFF)
     ESPHCheck::contact_bodies(lmp, state, contact == CONTACT_PAPER ? "paper" : "solid");

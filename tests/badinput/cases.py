@@ -155,6 +155,7 @@ CASES = [
     ("ps_artstress_dp_zero", [K("pair", " artstress 0.3 4 0")], "error:dp must be > 0"),
     ("ps_artstress_dp_too_big", [K("pair", " artstress 0.3 4 3e-4")], "error:below the kernel"),
     ("ps_artstress_on", [K("pair", " artstress 0.3 4 1e-4")], "runs"),
+    ("ps_artstress_dp_small", [K("pair", " artstress 0.3 4 3e-5")], "warning:dp is the particle spacing"),
     ("ps_artstress_zero_is_off", [K("pair", " artstress 0 4 1e-4")], "same"),
     ("ps_xsph_missing", [K("pair", " xsph")], "error:missing argument"),
     ("ps_xsph_above_one", [K("pair", " xsph 1.5")], "error:[0, 1]"),
