@@ -256,8 +256,9 @@ void FixESPHBoundary::init()
   if (bnd_bodies.empty())
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/boundary group {} has no boundary particles",
                group->names[igroup]);
-  for (int b : real_bodies)
-    if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b) && reused > 0)
+  for (int b : real_bodies) {
+    if (std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b)) continue;
+    if (reused > 0)
       error->all(FLERR, Error::NOLASTLINE,
                  "Body {} has real particles but no boundary particles in fix esph/boundary: "
                  "the fix found {} boundary particles in group {} and uses them (it makes "
@@ -266,13 +267,13 @@ void FixESPHBoundary::init()
                  "particles, delete_atoms) before defining the fix, so that it makes them for "
                  "every body",
                  b, reused, group->names[igroup], b);
-    else if (!std::binary_search(bnd_bodies.begin(), bnd_bodies.end(), b))
-      error->all(FLERR, Error::NOLASTLINE,
-                 "Body {} has real particles but no boundary particles in fix esph/boundary "
-                 "(a body gets them where its particles have a surface: a single particle has "
-                 "no surface; give the body more particles or its boundary particles with "
-                 "given)",
-                 b);
+    error->all(FLERR, Error::NOLASTLINE,
+               "Body {} has real particles but no boundary particles in fix esph/boundary "
+               "(a body gets them where its particles have a surface: a single particle has "
+               "no surface; give the body more particles or its boundary particles with "
+               "given)",
+               b);
+  }
   for (int b : bnd_bodies)
     if (!real_bodies.empty() && !std::binary_search(real_bodies.begin(), real_bodies.end(), b))
       error->all(FLERR, Error::NOLASTLINE,
