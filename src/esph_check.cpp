@@ -415,6 +415,35 @@ void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHCheck::smoothing_length(LAMMPS *lmp, double h0, double hmax, int hvar_flag, double spacing)
+{
+  if (!(spacing > 0.0)) return;
+  Error *error = lmp->error;
+  const double ratio = h0 / spacing;
+  if (ratio > H_ERROR)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid smoothing length h = {} is {:.4g} x the particle spacing {} of "
+               "fix esph/boundary; expected 1 to 2 spacings, at most {:g} (the kernel reaches "
+               "2 h): set h to about 1.3 x the spacing, {:.4g}",
+               h0, ratio, spacing, H_ERROR, 1.3 * spacing);
+  if (hvar_flag && ratio * hmax > H_ERROR)
+    error->all(FLERR, Error::NOLASTLINE,
+               "Pair esph/solid hvar {}: the smoothing length may grow to h x hvar = {:.4g}, "
+               "{:.4g} x the particle spacing {} of fix esph/boundary (the neighbour cutoff is "
+               "2 h x hvar); expected h x hvar of at most {:g} spacings: hvar is the largest "
+               "expected h/h0, usually 1.2 to 2",
+               hmax, h0 * hmax, ratio * hmax, spacing, H_ERROR);
+  if (ratio > H_WARN && lmp->comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid smoothing length h = {} is {:.4g} x the particle spacing {} "
+                   "of fix esph/boundary; 1 to 2 spacings is usual (a larger h smooths over more "
+                   "particles at a higher cost): set h to about 1.3 x the spacing, {:.4g}, unless "
+                   "meant",
+                   h0, ratio, spacing, 1.3 * spacing);
+}
+
+/* ---------------------------------------------------------------------- */
+
 void ESPHCheck::unintegrated(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int *rigid)
 {
   const int *mask = lmp->atom->mask;

@@ -95,12 +95,20 @@ namespace ESPHCheck {
   // spacing^dim (outside [1/VOLUME_OFF, VOLUME_OFF]: a mass in the wrong unit)
   void volumes(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double spacing, int dim);
 
+  // the smoothing length h0 of pair esph/solid and, with hvar, the largest h0 x hmax the
+  // neighbour cutoff admits, against the particle spacing of fix esph/boundary (> 0): an
+  // error beyond H_ERROR spacings (every particle would see thousands of neighbours, or
+  // the cutoff spans the box), a warning for h0 beyond H_WARN spacings (1 to 2 is usual)
+  void smoothing_length(LAMMPS *lmp, double h0, double hmax, int hvar_flag, double spacing);
+
   static constexpr double DENSITY_OFF = 1.5;
   static constexpr double VOLUME_OFF = 3.0;
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
   static constexpr double MAX_RATIO = 3.0;
   static constexpr double ISOLATED = -2.0;
+  static constexpr double H_WARN = 3.0;      // in units of the particle spacing
+  static constexpr double H_ERROR = 10.0;    // in units of the particle spacing
 }    // namespace ESPHCheck
 
 }    // namespace LAMMPS_NS

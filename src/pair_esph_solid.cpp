@@ -595,6 +595,13 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
+  // h against the particle spacing, before the neighbour bins are made for the cutoff
+  {
+    const auto bfix = modify->get_fix_by_style("^esph/boundary$");
+    if (!bfix.empty())
+      ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag,
+                                  dynamic_cast<FixESPHBoundary *>(bfix[0])->get_spacing());
+  }
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
   atom_contact_flag = 0;
   neighbor->add_request(this);

@@ -137,6 +137,12 @@ CASES = [
     ("ps_hvar_below_one", [K("pair", " hvar 0.5")], "error:(>= 1)"),
     ("ps_hvar_text", [K("pair", " hvar x")], "error:Expected floating point"),
     ("ps_hvar_on", [K("pair", " hvar 1.5")], "runs"),
+    # h and h x hvar against the particle spacing of fix esph/boundary (1 to 2 is usual)
+    ("ps_h_huge", [R("pair", "pair_style esph/solid 0.13")], "error:smoothing length h = 0.13"),
+    ("ps_hvar_huge", [K("pair", " hvar 1000")], "error:hvar 1000: the smoothing length may grow"),
+    ("ps_h_four_spacings", [R("pair", "pair_style esph/solid 4e-4")],
+     "warning:1 to 2 spacings is usual"),
+    ("ps_h_two_spacings_hvar_two", [R("pair", "pair_style esph/solid 2e-4 hvar 2")], "runs"),
     ("ps_contact_missing", [K("pair", " contact")], "error:missing argument"),
     ("ps_contact_unknown", [K("pair", " contact maybe")], "error:maybe"),
     ("ps_contact_solid", [K("pair", " contact solid")], "same"),
