@@ -551,6 +551,24 @@ void PairESPHSolid::init_style()
                ustyle);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
+  // the per-type masses of atom styles that have them are never used (the per-atom masses
+  // are), but write_data writes them and read_data rejects a mass of 0: the types whose
+  // mass was not set get 1.0, so that a data file of an ESPH system can be read back
+  if (atom->mass && atom->mass_setflag) {
+    std::string unset;
+    int nunset = 0;
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (!atom->mass_setflag[t]) {
+        atom->mass[t] = 1.0;
+        atom->mass_setflag[t] = 1;
+        unset += (nunset++ ? " " : "") + std::to_string(t);
+      }
+    if (nunset && comm->me == 0)
+      utils::logmesg(lmp,
+                     "Pair esph/solid: per-type mass 1.0 for atom type{} {} (unused: ESPH uses the "
+                     "per-atom masses; set for write_data and read_data)\n",
+                     nunset > 1 ? "s" : "", unset);
+  }
   // an SPH solid has no potential energy whose gradient is its force
   if (update->whichflag == 2)
     error->all(FLERR, Error::NOLASTLINE,

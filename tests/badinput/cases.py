@@ -478,6 +478,17 @@ CASES = [
     ("rs_reset_timestep_in_contact",
      [B("run", "run 10"), B("run", "reset_timestep 0")],
      "warning:contact durations across the reset are wrong"),
+    # write_data and read_data: the per-type masses ESPH never set are written as 1.0
+    # (read_data rejects 0), the user's are kept
+    ("rs_write_read_data",
+     [B("run", "mass 2 3.0"), A("run", "write_data rt.data"), A("run", "clear"),
+      A("run", "units si"), A("run", "atom_style atomic"), A("run", "atom_modify map array"),
+      A("run", "boundary f f f"), A("run", "pair_style esph/solid 1.3e-4"),
+      A("run", "read_data rt.data fix ESPH_STATE NULL ESPH_STATE fix ESPH_STRESS NULL "
+               "ESPH_STRESS fix ESPH_NORMAL NULL ESPH_NORMAL"),
+      A("run", PC + MG), A("run", "fix int all esph/integrate"), A("run", "timestep 5e-9"),
+      A("run", FB + "spacing 1e-4"), A("run", "neighbor 2e-5 bin"),
+      A("run", "run 5")], "runs"),
     ("rs_delete_atoms",
      [A("run", "delete_atoms group a compress no"), A("run", "run 5")],
      "error:define it again (unfix, then fix)"),
