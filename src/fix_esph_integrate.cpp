@@ -250,6 +250,15 @@ void FixESPHIntegrate::setup(int /*vflag*/)
       v[i][1] = pair->bvel[i][1];
       v[i][2] = pair->bvel[i][2];
     }
+  // the contact force (vector element 8) is that of the last force computation, as the
+  // pair counts (elements 2 and 7) are: the setup computation's, not the last step's of a
+  // previous run (with another pair style or state); the contact history (elements 4 to 6,
+  // compute esph/contact) is kept by the steps only
+  if (pair->nboundary > 0) {
+    double total[3];
+    contact_tallies(total);
+    contact_all.force = total[2];
+  }
   if (cfl > 0.0) adapt_dt();
 }
 
@@ -534,13 +543,23 @@ void FixESPHIntegrate::final_integrate()
   // left resting against each other without load (a short striker that has stopped) or
   // a surface particle bouncing once at first touch do not change the contact time
   if (pair->nboundary > 0) {
-    double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs, pair->fcontact};
     double total[3];
-    MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
+    contact_tallies(total);
     const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
     contact_all.update(t, update->dt, total[0], total[1], total[2]);
     update_body_pairs(t);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the pair style's touching and interacting cross-body pairs and contact
+   force of its last force computation, summed over all ranks
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::contact_tallies(double *total)
+{
+  double local[3] = {(double) pair->ntouch_pairs, (double) pair->ncontact_pairs, pair->fcontact};
+  MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
 }
 
 /* ----------------------------------------------------------------------

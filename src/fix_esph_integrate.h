@@ -85,6 +85,7 @@ class FixESPHIntegrate : public Fix {
   double dtmin, dtmax;                // bounds of the adaptive step
   ESPH::ContactRecord contact_all;    // contact history of all bodies together
   void update_body_pairs(double t);
+  void contact_tallies(double *total);
   int havepred;        // pred holds the prediction of a completed step
   bigint fp_natoms;    // number of atoms when the fingerprints were stored
   bigint fp_step;      // step at which they were stored

@@ -316,6 +316,17 @@ CASES = [
     ("fi_with_fix_nve", [A("fix_bnd", "fix nve all nve")], "error:also integrates"),
     ("fi_with_fix_nve_limit", [A("fix_bnd", "fix lim a nve/limit 1e-6")], "error:also integrates"),
     ("fi_with_fix_nve_first", [B("fix_int", "fix nve b nve")], "error:also integrates"),
+    # the contact force f_int[8] at the setup of a run after pair_style is redefined: that of
+    # the setup force computation (the sum of contact/force over body 1), not the last step's
+    ("fi_fc_setup_after_pair_redefined",
+     [A("run", PS + "visc 2 2 0.1"), A("run", "pair_coeff * * rho0 7850 shear 40e9 " + MG),
+      B("thermo_style", "compute fc a esph/atom contact/force"),
+      B("thermo_style", "compute fa a reduce sum c_fc"), K("thermo_style", " c_fa"),
+      A("run", "run 0"),
+      A("run", "variable stale equal abs(f_int[8]-c_fa)>1e-9*abs(c_fa)"),
+      A("run", 'if "${stale} || $(c_fa) <= 0" then "print \'f_int[8] = $(f_int[8]:%.15g) but '
+               'the contact force now is $(c_fa:%.15g)\'" "quit 3"'), A("run", "run 5")],
+     "runs"),
     # ---------------- fix esph/boundary ----------------
     ("fb_no_spacing", [R("fix_bnd", "fix bnd all esph/boundary")],
      "error:needs the particle spacing"),
