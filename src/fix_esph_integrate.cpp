@@ -46,15 +46,15 @@ using namespace FixConst;
 
 // number of global values in restart files before the contact records, the first of
 // which tells the layout
-static constexpr int NRESTART = 6;
+static constexpr int NRESTART = 7;
 
 // the switched viscosity coefficient over a half step, kept within [amin, amax]
 static inline double advance_alpha(double a, double rate, double dt, double amin, double amax)
 {
   return MIN(MAX(a + dt * rate, amin), amax);
 }
-// (changed with the per-atom prediction's layout: P_X added)
-static constexpr double RESTART_LAYOUT = 2026120401.0;
+// (changed with the per-atom prediction's layout: P_PREV and the step between the rates)
+static constexpr double RESTART_LAYOUT = 2026120402.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -80,6 +80,10 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   time_file = 0.0;
   step_file = -1;
   dt_used = 0.0;
+  dt_prev = 0.0;
+  extrapolate = 1;
+  extrapolate_set = 0;
+  extrap_on = 0;
   dtmin = 0.0;
   dtmax = 0.0;
   staggered = 0;
@@ -114,6 +118,12 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
                    "Fix esph/integrate scheme must be predicted or staggered, got {}",
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "extrapolate") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "fix esph/integrate extrapolate", error);
+      extrapolate = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      extrapolate_set = 1;
+      iarg += 2;
     } else if (strcmp(arg[iarg], "dtmin") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/integrate dtmin", error);
       dtmin = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -121,7 +131,10 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, iarg + 1, "Fix esph/integrate dtmin must be > 0, got {}", arg[iarg + 1]);
       iarg += 2;
     } else {
-      error->all(FLERR, iarg, "Unknown fix esph/integrate keyword: {}", arg[iarg]);
+      error->all(FLERR, iarg,
+                 "Unknown fix esph/integrate keyword: {} (expected cfl, dtmin, dtmax, move, "
+                 "scheme or extrapolate)",
+                 arg[iarg]);
     }
   }
   if (dtmax > 0.0 && dtmin > dtmax)
@@ -130,6 +143,10 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix esph/integrate scheme staggered needs move yes (its rate pass falls between "
                "the kick and the drift of the step)");
+  if (staggered && extrapolate_set && extrapolate && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/integrate extrapolate yes has no effect with scheme staggered "
+                   "(its rates are those of the step itself): leave it out");
   if (cfl == 0.0 && (dtmin > 0.0 || dtmax > 0.0))
     error->all(FLERR, "Fix esph/integrate dtmin/dtmax need the cfl keyword");
   // with move no another fix (e.g. fix move) integrates the motion
@@ -180,6 +197,17 @@ void FixESPHIntegrate::init()
   pair = dynamic_cast<PairESPHSolid *>(force->pair_match("^esph/solid", 0));
   if (!pair)
     error->all(FLERR, Error::NOLASTLINE, "Fix esph/integrate requires pair style esph/solid");
+  // the paper's contact rule switches every cross-body pair on and off from one step to the
+  // next (its approach criterion, eq. 31): rates extrapolated across such a switch overshoot,
+  // and the overshoot feeds the next switch (the 3D rods gain energy without bound)
+  const int paper = (pair->contact == ESPH::CONTACT_PAPER);
+  extrap_on = extrapolate && !staggered && !paper;
+  if (extrapolate && extrapolate_set && !staggered && paper && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/integrate extrapolate yes is not used with pair esph/solid contact "
+                   "paper (the rule switches pairs on and off every step, and extrapolated rates "
+                   "would pump energy): the prediction uses the last rates; leave the keyword "
+                   "out or use contact solid");
   if (modify->get_fix_by_style("^esph/integrate").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -292,18 +320,37 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
   double *alpha = pair->vswitch_flag ? state->alpha : nullptr;
   const double *dalpha = pair->dalpha;
   const double amin = pair->vswitch_min, amax = pair->alpha;
+  // extrapolated prediction: weight of the change of the rates since the computation before
+  // (per unit of that step), for atoms whose stored rates belong to their trajectory
+  const double xw = (extrap_on && dt_prev > 0.0) ? (EXTRAP_A - 1.0) * update->dt / dt_prev : 0.0;
+  const int xstore = extrap_on;
 
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
       double *p = pred[i];
       if (i < nint && (mask[i] & groupbit)) {
         if (rmass[i] > 0.0) {
+          // the rates of the predicted half step: the last computation's, or extrapolated
+          // from the last two (then stored for the next step)
+          const double r[NRATES] = {f[i][0], f[i][1], f[i][2], drho[i], de[i], dh[i],
+                                    ds[i][0], ds[i][1], ds[i][2], ds[i][3], ds[i][4], ds[i][5],
+                                    alpha ? dalpha[i] : 0.0};
+          double rx[NRATES];
+          const double w = (p[P_PREVOK] > 0.0) ? xw : 0.0;
+          double *rp = p + P_PREV;
+          for (int k = 0; k < NRATES; k++) rx[k] = (w != 0.0) ? r[k] + w * (r[k] - rp[k]) : r[k];
+          if (xstore) {
+            for (int k = 0; k < NRATES; k++) rp[k] = r[k];
+            p[P_PREVOK] = 1.0;
+          } else {
+            p[P_PREVOK] = 0.0;
+          }
           if (move) {
             const double dtfm = dtf / rmass[i];
             for (int d = 0; d < 3; d++) {
               v[i][d] += dtfm * f[i][d];
               x[i][d] += dtv * v[i][d];
-              p[P_V + d] = v[i][d] + dtfm * f[i][d];
+              p[P_V + d] = v[i][d] + dtfm * rx[d];
             }
             // XSPH: the particle drifts with its velocity smoothed over its body
             if (xs)
@@ -314,14 +361,14 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
           // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
           advance_state(i, dth, 1);
           const int t = type[i];
-          p[P_RHO] = rho[i] + dth * drho[i];
-          p[P_E] = e[i] + dth * de[i];
-          p[P_H] = h[i] + dth * dh[i];
-          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * ds[i][k];
+          p[P_RHO] = rho[i] + dth * rx[3];
+          p[P_E] = e[i] + dth * rx[4];
+          p[P_H] = h[i] + dth * rx[5];
+          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * rx[6 + k];
           // the prediction does not commit plastic strain
           if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
           p[P_DIVV] = -drho[i] / rho[i];
-          if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], dalpha[i], dth, amin, amax);
+          if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], rx[12], dth, amin, amax);
           continue;
         } else if (move) {
           // boundary particle: moves with its interpolated velocity, its normal
@@ -335,6 +382,8 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
     }
   });
   pair->pred_valid = 1;
+  // the step between the rates just stored and those of the next computation
+  if (extrap_on) dt_prev = update->dt;
 }
 
 /* ----------------------------------------------------------------------
@@ -666,6 +715,8 @@ int FixESPHIntegrate::resume_check()
   // a fresh start: the prediction is stale until a step is completed
   if (!all) {
     havepred = 0;
+    // nor do the rates stored for the extrapolated prediction
+    for (int i = 0; i < atom->nlocal; i++) pred[i][P_PREVOK] = 0.0;
     return 0;
   }
   // the re-evaluation uses the normals the last computation used; it stores the ones it
@@ -809,7 +860,8 @@ void FixESPHIntegrate::write_restart(FILE *fp)
                            (double) (now ? atom->natoms : fp_natoms),
                            update->atime + (update->ntimestep - update->atimestep) * update->dt,
                            (double) update->ntimestep,
-                           now ? pair->dt_step : dt_used};
+                           now ? pair->dt_step : dt_used,
+                           dt_prev};
   // then the contact history of all bodies and per pair of bodies
   std::vector<double> bp(ESPH::ContactRecord::NVALUES);
   contact_all.pack(bp.data());
@@ -881,6 +933,7 @@ void FixESPHIntegrate::restart(char *buf)
   time_file = list[3];
   step_file = (bigint) list[4];
   dt_used = list[5];
+  dt_prev = list[6];
   time_pending = 1;
   contact_all.unpack(list + NRESTART);
   const double *bp = list + NRESTART + ESPH::ContactRecord::NVALUES;

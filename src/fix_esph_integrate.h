@@ -64,15 +64,26 @@ class FixESPHIntegrate : public Fix {
   // the force computation; at the end of a run (and in restart files) the real-particle
   // normal, surface gap, gap rate and engagement that the last force computation used
   // (P_USED .. P_USED + 5), the fingerprint of the atom's state but its position (P_HASH),
-  // the predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch) and the
-  // position the fingerprint belongs to (P_X .. P_X + 2, wrapped as the fingerprint)
+  // the predicted switched viscosity coefficient (P_ALPHA, 0 without visc/switch), the
+  // position the fingerprint belongs to (P_X .. P_X + 2, wrapped as the fingerprint), and
+  // the rates of the force computation before the last one that the extrapolated
+  // prediction needs (P_PREV .. P_PREV + NRATES - 1: force, drho, de, dh, dS, dalpha) with
+  // a flag that they belong to this atom's trajectory (P_PREVOK)
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
-                       P_HASH = 19, P_ALPHA = 20, P_X = 21, NPRED = 24;
+                       P_HASH = 19, P_ALPHA = 20, P_X = 21, P_PREV = 24, NRATES = 13,
+                       P_PREVOK = 37, NPRED = 38;
+  // extrapolated prediction: the rates of the predicted half step are
+  // r^n + (EXTRAP_A - 1) (dt^n / dt^(n-1)) (r^n - r^(n-1)); 4/3 cancels the leading
+  // (omega dt)^4 amplitude error of the predictor-corrector on an undamped mode
+  static constexpr double EXTRAP_A = 4.0 / 3.0;
   double **pred;
   int move;    // 0: only the SPH state is integrated, motion comes from another fix
   // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),
   // then (stagger_commit()) the state is advanced to n+1, then the forces are computed
   int staggered;
+  int extrapolate;    // the prediction extrapolates the rates of the last two computations
+  int extrapolate_set;    // the extrapolate keyword was given
+  int extrap_on;          // extrapolate in this run (not with the paper's contact rule)
 
   // contact history per pair of bodies (I < J) that have touched, the same on every rank,
   // sorted by bodies (compute esph/contact)
@@ -93,6 +104,7 @@ class FixESPHIntegrate : public Fix {
   double time_file;    // elapsed time and step when the restart file was written
   bigint step_file;
   double dt_used;    // time step of the last force computation, saved at post_run
+  double dt_prev;    // time step between the rates stored in P_PREV and the last ones
   int nthreads;      // threads of the per-atom passes (1; esph/integrate/omp: package omp)
   class PairESPHSolid *pair;
   class ESPHState *state;
