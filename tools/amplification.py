@@ -3,8 +3,11 @@
 v' = w s, s' = -w v (a velocity and a stress amplitude; w dt = C for the fastest 1D mode of
 the cubic spline at h = dx). Printed: w dt, then the spectral radius of one step of the
 predicted scheme (state v, s and the stored rates of the last force computation) and of
-the staggered scheme (kick, rate pass, state update, force pass). Above 1: the mode grows.
-Used by doc/visc_switch.md section 5."""
+the staggered scheme (kick, rate pass, state update, force pass), and of the predicted
+scheme with the rates of its prediction extrapolated from the last two computations
+(fix esph/integrate extrapolate yes, the default: r + (a - 1) (r - r_prev), a = 4/3, which
+cancels the (w dt)^4 term of the predicted scheme's growth). Above 1: the mode grows.
+Used by doc/visc_switch.md section 5 and doc/fix_esph_integrate.rst."""
 import numpy as np
 
 
@@ -28,6 +31,18 @@ def predicted(w):
     return radius(step, 4)
 
 
+def extrapolated(w, a=4.0 / 3.0):
+    # state: v^n, s^n, F^n, D^n and the rates of the computation before, F^(n-1), D^(n-1)
+    def step(st):
+        v, s, f, d, fp, dp = st
+        vh, sh = v + 0.5 * f, s + 0.5 * d                      # half steps
+        fx, dx = f + (a - 1.0) * (f - fp), d + (a - 1.0) * (d - dp)
+        vp, sp = vh + 0.5 * fx, sh + 0.5 * dx                  # extrapolated prediction
+        f1, d1 = w * sp, -w * vp
+        return [vh + 0.5 * f1, sh + 0.5 * d1, f1, d1, f, d]
+    return radius(step, 6)
+
+
 def staggered(w):
     # state: v^n, s^n, force rate F^n = w s^n
     def step(st):
@@ -40,6 +55,7 @@ def staggered(w):
 
 
 if __name__ == "__main__":
-    print("w_dt predicted staggered")
-    for w in (0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5, 1.9):
-        print(f"{w:4.2f} {predicted(w):.6f} {staggered(w):.6f}")
+    print("w_dt predicted staggered extrapolated   (predicted - 1, extrapolated - 1)")
+    for w in (0.016, 0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5, 1.9):
+        p, x = predicted(w), extrapolated(w)
+        print(f"{w:5.3f} {p:.7f} {staggered(w):.7f} {x:.7f}   ({p - 1:+.2e}, {x - 1:+.2e})")
