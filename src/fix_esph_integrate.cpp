@@ -119,8 +119,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "extrapolate") == 0) {
-      if (iarg + 1 >= narg)
-        utils::missing_cmd_args(FLERR, "fix esph/integrate extrapolate", error);
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/integrate extrapolate", error);
       extrapolate = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       extrapolate_set = 1;
       iarg += 2;
@@ -202,6 +201,9 @@ void FixESPHIntegrate::init()
   // and the overshoot feeds the next switch (the 3D rods gain energy without bound)
   const int paper = (pair->contact == ESPH::CONTACT_PAPER);
   extrap_on = extrapolate && !staggered && !paper;
+  // rates stored by an earlier run do not belong to a later one that extrapolates again
+  if (!extrap_on)
+    for (int i = 0; i < atom->nlocal; i++) pred[i][P_PREVOK] = 0.0;
   if (extrapolate && extrapolate_set && !staggered && paper && comm->me == 0)
     error->warning(FLERR,
                    "Fix esph/integrate extrapolate yes is not used with pair esph/solid contact "
@@ -332,25 +334,33 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
         if (rmass[i] > 0.0) {
           // the rates of the predicted half step: the last computation's, or extrapolated
           // from the last two (then stored for the next step)
-          const double r[NRATES] = {f[i][0], f[i][1], f[i][2], drho[i], de[i], dh[i],
-                                    ds[i][0], ds[i][1], ds[i][2], ds[i][3], ds[i][4], ds[i][5],
-                                    alpha ? dalpha[i] : 0.0};
+          const double *fx = f[i], *dsx = ds[i];
+          double drx = drho[i], dex = de[i], dhx = dh[i], dax = alpha ? dalpha[i] : 0.0;
           double rx[NRATES];
-          const double w = (p[P_PREVOK] > 0.0) ? xw : 0.0;
-          double *rp = p + P_PREV;
-          for (int k = 0; k < NRATES; k++) rx[k] = (w != 0.0) ? r[k] + w * (r[k] - rp[k]) : r[k];
           if (xstore) {
-            for (int k = 0; k < NRATES; k++) rp[k] = r[k];
+            const double r[NRATES] = {f[i][0],  f[i][1],  f[i][2],  drho[i],  de[i],
+                                      dh[i],    ds[i][0], ds[i][1], ds[i][2], ds[i][3],
+                                      ds[i][4], ds[i][5], dax};
+            const double w = (p[P_PREVOK] > 0.0) ? xw : 0.0;
+            double *rp = p + P_PREV;
+            for (int k = 0; k < NRATES; k++) {
+              rx[k] = (w != 0.0) ? r[k] + w * (r[k] - rp[k]) : r[k];
+              rp[k] = r[k];
+            }
             p[P_PREVOK] = 1.0;
-          } else {
-            p[P_PREVOK] = 0.0;
+            fx = rx;
+            drx = rx[3];
+            dex = rx[4];
+            dhx = rx[5];
+            dsx = rx + 6;
+            dax = rx[12];
           }
           if (move) {
             const double dtfm = dtf / rmass[i];
             for (int d = 0; d < 3; d++) {
               v[i][d] += dtfm * f[i][d];
               x[i][d] += dtv * v[i][d];
-              p[P_V + d] = v[i][d] + dtfm * rx[d];
+              p[P_V + d] = v[i][d] + dtfm * fx[d];
             }
             // XSPH: the particle drifts with its velocity smoothed over its body
             if (xs)
@@ -361,14 +371,14 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
           // half step to n+1/2 (stored), prediction of the end of the step (for the pair)
           advance_state(i, dth, 1);
           const int t = type[i];
-          p[P_RHO] = rho[i] + dth * rx[3];
-          p[P_E] = e[i] + dth * rx[4];
-          p[P_H] = h[i] + dth * rx[5];
-          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * rx[6 + k];
+          p[P_RHO] = rho[i] + dth * drx;
+          p[P_E] = e[i] + dth * dex;
+          p[P_H] = h[i] + dth * dhx;
+          for (int k = 0; k < 6; k++) p[P_S + k] = s[i][k] + dth * dsx[k];
           // the prediction does not commit plastic strain
           if (yield[t] > 0.0) ESPH::radial_return(p + P_S, yield[t], hard[t], shear[t], epsp[i]);
           p[P_DIVV] = -drho[i] / rho[i];
-          if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], rx[12], dth, amin, amax);
+          if (alpha) p[P_ALPHA] = advance_alpha(alpha[i], dax, dth, amin, amax);
           continue;
         } else if (move) {
           // boundary particle: moves with its interpolated velocity, its normal

@@ -70,8 +70,8 @@ class FixESPHIntegrate : public Fix {
   // prediction needs (P_PREV .. P_PREV + NRATES - 1: force, drho, de, dh, dS, dalpha) with
   // a flag that they belong to this atom's trajectory (P_PREVOK)
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
-                       P_HASH = 19, P_ALPHA = 20, P_X = 21, P_PREV = 24, NRATES = 13,
-                       P_PREVOK = 37, NPRED = 38;
+                       P_HASH = 19, P_ALPHA = 20, P_X = 21, P_PREV = 24, NRATES = 13, P_PREVOK = 37,
+                       NPRED = 38;
   // extrapolated prediction: the rates of the predicted half step are
   // r^n + (EXTRAP_A - 1) (dt^n / dt^(n-1)) (r^n - r^(n-1)); 4/3 cancels the leading
   // (omega dt)^4 amplitude error of the predictor-corrector on an undamped mode
@@ -81,7 +81,7 @@ class FixESPHIntegrate : public Fix {
   // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),
   // then (stagger_commit()) the state is advanced to n+1, then the forces are computed
   int staggered;
-  int extrapolate;    // the prediction extrapolates the rates of the last two computations
+  int extrapolate;        // the prediction extrapolates the rates of the last two computations
   int extrapolate_set;    // the extrapolate keyword was given
   int extrap_on;          // extrapolate in this run (not with the paper's contact rule)
 
