@@ -595,7 +595,7 @@ void PairESPHSolid::init_style()
                "(contact solid or paper), not contact off");
   if (rigid_flag) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
   ESPHCheck::unintegrated(lmp, state, fix_int, rigid);
-  if (contact != CONTACT_OFF && modify->get_fix_by_style("^esph/boundary$").empty()) {
+  if (contact != CONTACT_OFF && !boundary_fix()) {
     // contact needs boundary particles only when there is more than one body
     int lmin = 1 << 30, lmax = -(1 << 30);
     state->fetch();
@@ -614,12 +614,7 @@ void PairESPHSolid::init_style()
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
   // h against the particle spacing, before the neighbour bins are made for the cutoff
-  {
-    const auto bfix = modify->get_fix_by_style("^esph/boundary$");
-    if (!bfix.empty())
-      ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag,
-                                  dynamic_cast<FixESPHBoundary *>(bfix[0])->get_spacing());
-  }
+  ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
   atom_contact_flag = 0;
   neighbor->add_request(this);
@@ -667,9 +662,7 @@ void PairESPHSolid::setup()
   ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT, units);
   ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim);
   {
-    const auto bfix = modify->get_fix_by_style("^esph/boundary$");
-    const double spacing = bfix.empty() ? 0.0
-                                        : dynamic_cast<FixESPHBoundary *>(bfix[0])->get_spacing();
+    const double spacing = boundary_spacing();
     ESPHCheck::volumes(lmp, state, eos, spacing, dim);
     // the artificial stress's dp is the particle spacing (Monaghan 2000)
     if (astress_flag && spacing > 0.0 && comm->me == 0 &&
@@ -882,6 +875,22 @@ void PairESPHSolid::compute(int eflag, int vflag)
   }
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   fix esph/boundary of the run, if any, and its particle spacing
+------------------------------------------------------------------------- */
+
+FixESPHBoundary *PairESPHSolid::boundary_fix() const
+{
+  const auto fixes = modify->get_fix_by_style("^esph/boundary$");
+  return fixes.empty() ? nullptr : dynamic_cast<FixESPHBoundary *>(fixes[0]);
+}
+
+double PairESPHSolid::boundary_spacing() const
+{
+  const FixESPHBoundary *bfix = boundary_fix();
+  return bfix ? bfix->get_spacing() : 0.0;
 }
 
 /* ----------------------------------------------------------------------

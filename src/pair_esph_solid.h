@@ -175,6 +175,9 @@ class PairESPHSolid : public Pair {
   virtual void allocate();
   void set_defaults();
   void grow_work();
+  // fix esph/boundary (nullptr without it) and its particle spacing (0 without it)
+  class FixESPHBoundary *boundary_fix() const;
+  double boundary_spacing() const;
   void hoist();
   void finalize(int eflag);
   void compute_normals();
