@@ -78,11 +78,15 @@ void ESPHState::ensure_visc(LAMMPS *lmp)
 
 void ESPHState::ensure_recon(LAMMPS *lmp)
 {
+  // the strain rates of the last computation: in restart files (a continued run is exact),
+  // not in data files (read_data needs only the three state sections; a run from a data
+  // file starts with zero rates, the paper's viscosity in its first computation)
   if (!internal_fix_exists(lmp, FIX_ID_RECON, "esph_drec"))
-    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_drec 6", FIX_ID_RECON));
+    lmp->modify->add_fix(
+        fmt::format("{} all property/atom d2_esph_drec 6 writedata no", FIX_ID_RECON));
   if (!internal_fix_exists(lmp, FIX_ID_RECON_USED, "esph_drec_used"))
     lmp->modify->add_fix(
-        fmt::format("{} all property/atom d2_esph_drec_used 6", FIX_ID_RECON_USED));
+        fmt::format("{} all property/atom d2_esph_drec_used 6 writedata no", FIX_ID_RECON_USED));
 }
 
 /* ---------------------------------------------------------------------- */

@@ -104,14 +104,15 @@ void PairESPHSolid::set_defaults()
   vswitch_flag = 0;
   vswitch_min = 0.1;
   vswitch_l = 0.2;
-  recon_flag = RECON_OFF;
+  recon_flag = RECON_VANLEER;
+  recon_given = 0;
   heat_flag = 0;
   g1 = g2 = 0.0;
   hvar_flag = 0;
   hmax = 1.0;
   contact = CONTACT_SOLID;
   gaptol = 0.05;
-  onset = 10;
+  onset = 5;
   cone_flag = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
@@ -244,6 +245,7 @@ void PairESPHSolid::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "visc/recon") == 0) {
       if (iarg + 1 >= narg)
         utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/recon", error);
+      recon_given = 1;
       if (strcmp(arg[iarg + 1], "vanleer") == 0)
         recon_flag = RECON_VANLEER;
       else if (strcmp(arg[iarg + 1], "minmod") == 0)
@@ -381,15 +383,20 @@ void PairESPHSolid::settings(int narg, char **arg)
                vswitch_min, alpha);
   // the switched coefficient is per-atom state, like the density
   if (vswitch_flag) ESPHState::ensure_visc(lmp);
+  // without a viscosity there is nothing to reconstruct: the default's reconstruction is
+  // then off (it would cost without effect); a visc/recon given explicitly is warned about
+  if (recon_flag && alpha == 0.0 && beta == 0.0) {
+    if (recon_given && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair esph/solid visc/recon with visc alpha and beta 0 has no effect (there "
+                     "is no viscosity to reconstruct): set visc alpha or beta > 0, or drop "
+                     "visc/recon");
+    recon_flag = RECON_OFF;
+  }
   // so are the strain rates the reconstruction uses (restart files, atom migration)
   if (recon_flag) ESPHState::ensure_recon(lmp);
   // and the normal cones (carried from one force computation to the next)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
-  if (recon_flag && alpha == 0.0 && beta == 0.0 && comm->me == 0)
-    error->warning(FLERR,
-                   "Pair esph/solid visc/recon with visc alpha and beta 0 has no effect (there "
-                   "is no viscosity to reconstruct): set visc alpha or beta > 0, or drop "
-                   "visc/recon");
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "

@@ -78,7 +78,8 @@ class PairESPHSolid : public Pair {
   int vswitch_flag;           // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
   double vswitch_min;         // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;           // its decay constant l: tau_i = h_i / (l c_i)
-  int recon_flag;             // visc/recon: RECON_OFF, RECON_VANLEER, RECON_MINMOD
+  int recon_flag;             // visc/recon: RECON_OFF, RECON_VANLEER (default), RECON_MINMOD
+  int recon_given;            // visc/recon was given (not the default)
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;         // variable smoothing length (eq. 24)

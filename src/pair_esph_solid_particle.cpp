@@ -268,8 +268,12 @@ void PairESPHSolid::finalize(int eflag)
         else
           L /= rho;
         jaumann_rate(L, sp, shear[type[i]], ds[i]);
-        // visc/recon: the strain rate D = sym(L) for the next computation's reconstruction
-        if (recon_flag) {
+        // visc/recon: the strain rate D = sym(L) for the next computation's reconstruction;
+        // none in a type with a yield stress, whose pairs keep the full viscosity (a
+        // front's overshoot there would be locked in as plastic strain)
+        if (recon_flag && yield[type[i]] > 0.0) {
+          for (int k = 0; k < 6; k++) state->drec[i][k] = 0.0;
+        } else if (recon_flag) {
           double *d = state->drec[i];
           d[0] = L(0, 0);
           d[1] = L(1, 1);

@@ -174,7 +174,7 @@ CASES = [
     ("ps_onset_missing", [K("pair", " onset")], "error:missing argument"),
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),
-    ("ps_onset_default", [K("pair", " onset 10")], "same"),
+    ("ps_onset_default", [K("pair", " onset 5")], "same"),
     # a body added between runs while the old boundary particles remain: the fix uses them
     ("bf_body_added_reused",
      [A("run", "unfix bnd"), A("run", "region rc block 0.0004 0.0006 -0.0001 0.0001 -0.0001 0.0001 units box"),
@@ -211,8 +211,10 @@ CASES = [
     ("ps_vswitch_off", [K("pair", " visc/switch off")], "same"),
     ("ps_recon_missing", [K("pair", " visc/recon")], "error:missing argument"),
     ("ps_recon_bogus", [K("pair", " visc/recon superbee")], "error:must be vanleer, minmod or off, got superbee"),
-    ("ps_recon_off", [K("pair", " visc/recon off")], "same"),
-    ("ps_recon_vanleer", [K("pair", " visc/recon vanleer")], "runs"),
+    ("ps_recon_off", [K("pair", " visc/recon off")], "runs"),
+    ("ps_recon_vanleer", [K("pair", " visc/recon vanleer")], "same"),
+    # the default reconstruction without a viscosity is switched off without a word
+    ("ps_recon_default_no_visc", [K("pair", " visc 0 0 0.1")], "runs"),
     ("ps_recon_minmod_np2", [K("pair", " visc/recon minmod")], "runs", 2),
     ("ps_recon_no_visc", [K("pair", " visc 0 0 0.1 visc/recon vanleer")], "warning:visc/recon with visc alpha and beta 0"),
     ("ps_recon_fix_first", [K("pair", " visc/recon vanleer"), M("fix_int", "pair")], "runs"),

@@ -47,7 +47,7 @@ def rod(pair_extra, dim=1, dx=0.1, np=1, tag="", V=50.0):
 
 # --- 1. 1D convergence ---
 van = {dx: rod("visc/recon vanleer", dx=dx, tag="van") for dx in (0.2, 0.1, 0.05)}
-paper = {dx: rod("", dx=dx, tag="paper") for dx in (0.2, 0.1, 0.05)}
+paper = {dx: rod("visc/recon off", dx=dx, tag="paper") for dx in (0.2, 0.1, 0.05)}
 mm = rod("visc/recon minmod", tag="minmod")
 for dx in van:
     print(f"INFO 1D {dx} mm: vanleer {van[dx]}; paper's viscosity {paper[dx]}")
@@ -75,7 +75,7 @@ c.true("1D 0.1 mm minmod: residual between vanleer's and the paper's",
 # not; the order of the linear part is the scheme's: h^(p/(p+1)) for a step spread by an
 # error of order p
 lin = {dx: 10.0 * rod("visc/recon vanleer", dx=dx, tag="van", V=5.0)["v_impactor"] for dx in (0.2, 0.1, 0.05)}
-lin_p = {dx: 10.0 * rod("", dx=dx, tag="paper", V=5.0)["v_impactor"] for dx in (0.2, 0.1, 0.05)}
+lin_p = {dx: 10.0 * rod("visc/recon off", dx=dx, tag="paper", V=5.0)["v_impactor"] for dx in (0.2, 0.1, 0.05)}
 order_l = math.log(lin[0.2] / lin[0.05]) / math.log(4.0)
 order_lp = math.log(lin_p[0.2] / lin_p[0.05]) / math.log(4.0)
 print(f"INFO 1D linear limit, residual x 10: vanleer {lin}, paper's {lin_p}; orders {order_l:.3f}, {order_lp:.3f}")
@@ -103,7 +103,7 @@ for k in ("contact_time_us", "v_impactor", "v_target", "energy_drift_pct"):
 
 # --- 3. free bar: the fundamental free-free mode over 20000 steps (about 60 periods) ---
 fb, vib = {}, {}
-for name, extra in (("paper", ""), ("vanleer", "visc/recon vanleer")):
+for name, extra in (("paper", "visc/recon off"), ("vanleer", "visc/recon vanleer")):
     log = et.run(a, "free_bar/in.free_bar", {"nsteps": 20000, "period_check": 1,
                                              "pair_extra": extra}, log=f"log.bar.{name}")
     fb[name] = et.summary(log, "FREE_BAR")

@@ -30,29 +30,32 @@ import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("viscosity switch: 1D convergence, hard-case stability, continuation")
-SW = "visc/switch 0.1 0.2"
+# the switch and the paper's viscosity as measured in doc/visc_switch.md (without the
+# default's reconstruction)
+PAPER = "visc/recon off"
+SW = "visc/switch 0.1 0.2 visc/recon off"
 
 # --- 1. convergence of the residual velocity ---
 DX = [0.2, 0.1, 0.05, 0.025]
 res = {}
-for extra in ("", SW):
+for extra in (PAPER, SW):
     res[extra] = []
     for dx in DX:
         s = et.summary(et.run(a, "rod_impact/in.rod_impact",
                               {"dim": 1, "dx": dx, "contact": "solid", "tend": 12.0, "out": 0,
                                "thermo_every": 1000, "pair_extra": extra},
-                              log=f"log.conv.{dx}.{'sw' if extra else 'av'}"))
+                              log=f"log.conv.{dx}.{'sw' if extra == SW else 'av'}"))
         res[extra].append(s["v_impactor"])
-        c.near(f"momentum split at {dx} mm {'switch' if extra else 'paper AV'} [m/s]",
+        c.near(f"momentum split at {dx} mm {'switch' if extra == SW else 'paper AV'} [m/s]",
                s["v_impactor"] + s["v_target"], 50.0, 1e-9, "equal masses, exact")
 order = {k: math.log(v[0] / v[-1]) / math.log(DX[0] / DX[-1]) for k, v in res.items()}
-print("INFO residual [m/s] paper AV:", " ".join(f"{v:.4f}" for v in res[""]),
-      f"order {order['']:.3f}")
+print("INFO residual [m/s] paper AV:", " ".join(f"{v:.4f}" for v in res[PAPER]),
+      f"order {order[PAPER]:.3f}")
 print("INFO residual [m/s] switch  :", " ".join(f"{v:.4f}" for v in res[SW]),
       f"order {order[SW]:.3f}")
 c.less("order of the residual with the switch (negated)", -order[SW], -0.52,
        "measured 0.567, paper AV 0.49; the goal 0.9 is not reached (see docstring)")
-for dx, r0, r1 in zip(DX, res[""], res[SW]):
+for dx, r0, r1 in zip(DX, res[PAPER], res[SW]):
     c.less(f"residual ratio switch / paper AV at {dx} mm", r1 / r0, 0.6, "measured 0.47-0.55")
 
 # --- 2. fast impact ---
