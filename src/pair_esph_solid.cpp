@@ -86,6 +86,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   comm_stage = COMM_HOIST;
   comm_bnd = 0;
   nforward = nreverse = 0;
+  recon_made = 0;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);
@@ -104,7 +105,8 @@ void PairESPHSolid::set_defaults()
   vswitch_flag = 0;
   vswitch_min = 0.1;
   vswitch_l = 0.2;
-  recon_flag = RECON_VANLEER;
+  recon_set = RECON_VANLEER;
+  recon_flag = RECON_OFF;
   recon_given = 0;
   heat_flag = 0;
   g1 = g2 = 0.0;
@@ -247,11 +249,11 @@ void PairESPHSolid::settings(int narg, char **arg)
         utils::missing_cmd_args(FLERR, "pair_style esph/solid visc/recon", error);
       recon_given = 1;
       if (strcmp(arg[iarg + 1], "vanleer") == 0)
-        recon_flag = RECON_VANLEER;
+        recon_set = RECON_VANLEER;
       else if (strcmp(arg[iarg + 1], "minmod") == 0)
-        recon_flag = RECON_MINMOD;
+        recon_set = RECON_MINMOD;
       else if (strcmp(arg[iarg + 1], "off") == 0)
-        recon_flag = RECON_OFF;
+        recon_set = RECON_OFF;
       else
         error->all(FLERR, iarg + 1,
                    "Pair esph/solid visc/recon must be vanleer, minmod or off, got {}",
@@ -385,16 +387,14 @@ void PairESPHSolid::settings(int narg, char **arg)
   if (vswitch_flag) ESPHState::ensure_visc(lmp);
   // without a viscosity there is nothing to reconstruct: the default's reconstruction is
   // then off (it would cost without effect); a visc/recon given explicitly is warned about
-  if (recon_flag && alpha == 0.0 && beta == 0.0) {
+  if (recon_set && alpha == 0.0 && beta == 0.0) {
     if (recon_given && comm->me == 0)
       error->warning(FLERR,
                      "Pair esph/solid visc/recon with visc alpha and beta 0 has no effect (there "
                      "is no viscosity to reconstruct): set visc alpha or beta > 0, or drop "
                      "visc/recon");
-    recon_flag = RECON_OFF;
+    recon_set = RECON_OFF;
   }
-  // so are the strain rates the reconstruction uses (restart files, atom migration)
-  if (recon_flag) ESPHState::ensure_recon(lmp);
   // and the normal cones (carried from one force computation to the next)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
@@ -620,11 +620,43 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
+  init_recon();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
   ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
   atom_contact_flag = 0;
   neighbor->add_request(this);
+}
+
+/* ----------------------------------------------------------------------
+   the reconstruction in use: the one set, unless no type can use it. The
+   reconstruction acts only within a body, between particles of types
+   without a yield stress (their strain rates are 0 in a type with one,
+   and a rigid type meets other bodies only): in a scene of such types it
+   would cost without effect, so it is off, its per-atom state not made.
+   Its strain rates live in internal fixes, made at the first run that
+   uses it (in time for a restart file's values: Modify::init discards
+   them after this)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_recon()
+{
+  recon_flag = recon_set;
+  if (!recon_set) return;
+  int usable = 0;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (setflag[t][t] && !rigid[t] && yield[t] <= 0.0) usable = 1;
+  if (!usable) {
+    if (recon_given && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair esph/solid visc/recon has no effect: every deformable type has a "
+                     "yield stress, where the viscosity is the paper's; drop visc/recon");
+    recon_flag = RECON_OFF;
+    return;
+  }
+  // made once; gone after that means deleted by hand (setup() says so)
+  if (!recon_made) ESPHState::ensure_recon(lmp);
+  recon_made = 1;
 }
 
 /* ---------------------------------------------------------------------- */

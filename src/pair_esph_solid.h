@@ -62,6 +62,7 @@ class PairESPHSolid : public Pair {
   static constexpr int NHQ_AST = 7;
 
  protected:
+  void init_recon();
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
   // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
   // plain forces less their torque)
@@ -78,8 +79,11 @@ class PairESPHSolid : public Pair {
   int vswitch_flag;           // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
   double vswitch_min;         // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;           // its decay constant l: tau_i = h_i / (l c_i)
-  int recon_flag;             // visc/recon: RECON_OFF, RECON_VANLEER (default), RECON_MINMOD
+  int recon_set;              // visc/recon as set: RECON_OFF, RECON_VANLEER (default), RECON_MINMOD
+  int recon_flag;             // the reconstruction in use (init_style): recon_set, or off where
+                              // no type can use it (all elastic types have a yield stress)
   int recon_given;            // visc/recon was given (not the default)
+  int recon_made;             // its per-atom fixes were made by this pair style
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;         // variable smoothing length (eq. 24)

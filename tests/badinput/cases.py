@@ -218,6 +218,14 @@ CASES = [
     ("ps_recon_minmod_np2", [K("pair", " visc/recon minmod")], "runs", 2),
     ("ps_recon_no_visc", [K("pair", " visc 0 0 0.1 visc/recon vanleer")], "warning:visc/recon with visc alpha and beta 0"),
     ("ps_recon_fix_first", [K("pair", " visc/recon vanleer"), M("fix_int", "pair")], "runs"),
+    # the reconstruction acts only in types without a yield stress: with none such it is
+    # off (no per-atom rates), silently by default, with a warning if given
+    ("ps_recon_default_all_yield", [K("coeff", " yield 2e8")], "runs"),
+    ("ps_recon_all_yield", [K("pair", " visc/recon vanleer"), K("coeff", " yield 2e8")],
+     "warning:visc/recon has no effect: every deformable type has a yield stress"),
+    ("ps_recon_off_all_yield", [K("pair", " visc/recon off"), K("coeff", " yield 2e8")], "runs"),
+    ("ps_recon_one_yield", [K("pair", " visc/recon minmod"),
+                            A("coeff", (PC + MG).replace("* *", "2 2") + " yield 2e8")], "runs"),
     # ---------------- pair_coeff ----------------
     ("pc_missing", [D("coeff")], "error:coeffs are not set"),
     ("pc_one_type_only", [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 " + MG)],
