@@ -91,6 +91,19 @@ void ESPHState::ensure_recon(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::drop_recon(LAMMPS *lmp)
+{
+  int flag, cols;
+  if (lmp->modify->get_fix_by_id(FIX_ID_RECON) &&
+      lmp->atom->find_custom("esph_drec", flag, cols) >= 0)
+    lmp->modify->delete_fix(FIX_ID_RECON);
+  if (lmp->modify->get_fix_by_id(FIX_ID_RECON_USED) &&
+      lmp->atom->find_custom("esph_drec_used", flag, cols) >= 0)
+    lmp->modify->delete_fix(FIX_ID_RECON_USED);
+}
+
+/* ---------------------------------------------------------------------- */
+
 void ESPHState::ensure_cone(LAMMPS *lmp)
 {
   if (!internal_fix_exists(lmp, FIX_ID_CONE, "esph_cone"))

@@ -73,6 +73,8 @@ class ESPHState {
   // create the reconstruction fix (d2_esph_drec) if it does not exist yet: only scenes
   // with visc/recon carry it
   static void ensure_recon(LAMMPS *lmp);
+  // deletes ESPH_RECON and ESPH_RECON_USED where they exist and are ESPH's
+  static void drop_recon(LAMMPS *lmp);
   // create the normal-cone fix (d2_esph_cone) if it does not exist yet: only scenes with
   // pair_style esph/solid contact/normal cone carry it
   static void ensure_cone(LAMMPS *lmp);

@@ -86,7 +86,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   comm_stage = COMM_HOIST;
   comm_bnd = 0;
   nforward = nreverse = 0;
-  recon_made = 0;
+  recon_warned = 0;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);
@@ -108,6 +108,7 @@ void PairESPHSolid::set_defaults()
   recon_set = RECON_VANLEER;
   recon_flag = RECON_OFF;
   recon_given = 0;
+  recon_warned = 0;
   heat_flag = 0;
   g1 = g2 = 0.0;
   hvar_flag = 0;
@@ -395,6 +396,14 @@ void PairESPHSolid::settings(int narg, char **arg)
                      "visc/recon");
     recon_set = RECON_OFF;
   }
+  // its strain rates are per-atom state (restart files): made here, so that a restart file's
+  // rates are taken up before a command between read_restart and the run moves atoms
+  // (delete_atoms); a run that has no use for them drops them (init_recon())
+  if (recon_set) ESPHState::ensure_recon(lmp);
+  // so is the plastic strain, which a restart file may hold although no type of this scene
+  // has a yield stress yet (a later run may give one again): made to take it up, dropped by
+  // init_plastic() where it is 0 everywhere and no type has a yield stress
+  if (modify->nfix_restart_peratom > 0) ESPHState::ensure_plastic(lmp);
   // and the normal cones (carried from one force computation to the next)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
@@ -621,6 +630,7 @@ void PairESPHSolid::init_style()
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
   init_recon();
+  init_plastic();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
   ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
@@ -630,33 +640,66 @@ void PairESPHSolid::init_style()
 
 /* ----------------------------------------------------------------------
    the reconstruction in use: the one set, unless no type can use it. The
-   reconstruction acts only within a body, between particles of types
-   without a yield stress (their strain rates are 0 in a type with one,
-   and a rigid type meets other bodies only): in a scene of such types it
-   would cost without effect, so it is off, its per-atom state not made.
-   Its strain rates live in internal fixes, made at the first run that
-   uses it (in time for a restart file's values: Modify::init discards
-   them after this)
+   reconstruction acts only within a body, between real particles of types
+   without a yield stress (their strain rates are 0 in a type with one, and
+   a rigid type meets other bodies only): in a run without such particles
+   it would cost without effect, so it is off. Decided at each run, from
+   its pair_coeff and its particles. A run without it drops the strain
+   rates (they would be stale by the next run that uses it, which starts
+   from zero rates, as a run restarted from this one's restart file does);
+   a run with it makes them where they are missing
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::init_recon()
 {
   recon_flag = recon_set;
-  if (!recon_set) return;
-  int usable = 0;
-  for (int t = 1; t <= atom->ntypes; t++)
-    if (setflag[t][t] && !rigid[t] && yield[t] <= 0.0) usable = 1;
-  if (!usable) {
-    if (recon_given && comm->me == 0)
-      error->warning(FLERR,
-                     "Pair esph/solid visc/recon has no effect: every deformable type has a "
-                     "yield stress, where the viscosity is the paper's; drop visc/recon");
-    recon_flag = RECON_OFF;
-    return;
+  if (recon_set) {
+    const int ntypes = atom->ntypes;
+    std::vector<int> mine(ntypes + 1, 0), real(ntypes + 1, 0);
+    const double *rmass = atom->rmass;
+    const int *type = atom->type;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (rmass[i] > 0.0) mine[type[i]] = 1;
+    MPI_Allreduce(mine.data(), real.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+    int usable = 0;
+    for (int t = 1; t <= ntypes; t++)
+      if (real[t] && setflag[t][t] && !rigid[t] && yield[t] <= 0.0) usable = 1;
+    if (!usable) {
+      if (recon_given && !recon_warned && comm->me == 0)
+        error->warning(FLERR,
+                       "Pair esph/solid visc/recon has no effect: no real particle is of a "
+                       "deformable type without a yield stress (where the viscosity is "
+                       "reconstructed); drop visc/recon");
+      recon_warned = 1;
+      recon_flag = RECON_OFF;
+    }
   }
-  // made once; gone after that means deleted by hand (setup() says so)
-  if (!recon_made) ESPHState::ensure_recon(lmp);
-  recon_made = 1;
+  if (recon_flag)
+    ESPHState::ensure_recon(lmp);
+  else
+    ESPHState::drop_recon(lmp);
+}
+
+/* ----------------------------------------------------------------------
+   the plastic strain (fix ESPH_PLASTIC) is kept while a type has a yield
+   stress or a particle has some; else it is dropped (nothing to keep, and a
+   run that has it made for a restart file's sake then equals the run that
+   never had it)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_plastic()
+{
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (setflag[t][t] && yield[t] > 0.0) return;
+  int flag, cols;
+  const int k = atom->find_custom("esph_epsp", flag, cols);
+  if (k < 0 || !modify->get_fix_by_id(ESPHState::FIX_ID_PLASTIC)) return;
+  const double *epsp = atom->dvector[k];
+  int mine = 0, any;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (epsp[i] != 0.0) mine = 1;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) modify->delete_fix(ESPHState::FIX_ID_PLASTIC);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -732,8 +775,9 @@ void PairESPHSolid::setup()
   }
   if (recon_flag && !state->drec)
     error->all(FLERR, Error::NOLASTLINE,
-               "Pair esph/solid visc/recon: the fix {} of d2_esph_drec or {} of "
-               "d2_esph_drec_used is gone (they must not be deleted)",
+               "Pair esph/solid visc/recon: fix {} or {} does not hold d2_esph_drec or "
+               "d2_esph_drec_used: these fix IDs are reserved for ESPH's internal fixes (use "
+               "another fix ID)",
                ESPHState::FIX_ID_RECON, ESPHState::FIX_ID_RECON_USED);
   if (cone_flag && contact == CONTACT_SOLID && !state->cone)
     error->all(FLERR, Error::NOLASTLINE,

@@ -63,6 +63,7 @@ class PairESPHSolid : public Pair {
 
  protected:
   void init_recon();
+  void init_plastic();
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
   // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
   // plain forces less their torque)
@@ -83,7 +84,7 @@ class PairESPHSolid : public Pair {
   int recon_flag;             // the reconstruction in use (init_style): recon_set, or off where
                               // no type can use it (all elastic types have a yield stress)
   int recon_given;            // visc/recon was given (not the default)
-  int recon_made;             // its per-atom fixes were made by this pair style
+  int recon_warned;           // the warning that visc/recon has no effect was given
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;         // variable smoothing length (eq. 24)

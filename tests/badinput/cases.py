@@ -222,7 +222,13 @@ CASES = [
     # off (no per-atom rates), silently by default, with a warning if given
     ("ps_recon_default_all_yield", [K("coeff", " yield 2e8")], "runs"),
     ("ps_recon_all_yield", [K("pair", " visc/recon vanleer"), K("coeff", " yield 2e8")],
-     "warning:visc/recon has no effect: every deformable type has a yield stress"),
+     "warning:visc/recon has no effect: no real particle is of a deformable type"),
+    # a type without a yield stress that holds boundary particles only does not count
+    ("ps_recon_bnd_type_elastic", [R("create_box", "create_box 3 box"), K("pair", " visc/recon vanleer"),
+                                   K("coeff", " yield 2e8"),
+                                   A("coeff", (PC + MG).replace("* *", "3 3")),
+                                   R("fix_bnd", FB + "spacing 1e-4 type 3")],
+     "warning:visc/recon has no effect: no real particle is of a deformable type"),
     ("ps_recon_off_all_yield", [K("pair", " visc/recon off"), K("coeff", " yield 2e8")], "runs"),
     ("ps_recon_one_yield", [K("pair", " visc/recon minmod"),
                             A("coeff", (PC + MG).replace("* *", "2 2") + " yield 2e8")], "runs"),
