@@ -778,9 +778,10 @@ double FixESPHIntegrate::fingerprint(int i)
   h = hash_mix(h, state->gap[i]);
   h = hash_mix(h, state->gapv[i]);
   h = hash_mix(h, state->eng[i]);
-  // (a plastic strain of 0 is no plastic state: the same whether ESPH_PLASTIC exists or not)
+  // (a plastic strain or an alpha of 0 is no state: the same whether ESPH_PLASTIC or
+  // ESPH_VISC exists or not)
   if (state->epsp && state->epsp[i] != 0.0) h = hash_mix(h, state->epsp[i]);
-  if (state->alpha) h = hash_mix(h, state->alpha[i]);
+  if (state->alpha && state->alpha[i] != 0.0) h = hash_mix(h, state->alpha[i]);
   h = hash_mix(h, (double) atom->type[i]);
   h = hash_mix(h, (double) state->body[i]);
   h = hash_mix(h, (atom->mask[i] & groupbit) ? 1.0 : 0.0);

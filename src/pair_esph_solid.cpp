@@ -404,6 +404,8 @@ void PairESPHSolid::settings(int narg, char **arg)
   // has a yield stress yet (a later run may give one again): made to take it up, dropped by
   // init_plastic() where it is 0 everywhere and no type has a yield stress
   if (modify->nfix_restart_peratom > 0) ESPHState::ensure_plastic(lmp);
+  // and the switched viscosity's alpha (a later run may switch it on again)
+  if (modify->nfix_restart_peratom > 0) ESPHState::ensure_visc(lmp);
   // and the normal cones (carried from one force computation to the next)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
@@ -682,24 +684,37 @@ void PairESPHSolid::init_recon()
 
 /* ----------------------------------------------------------------------
    the plastic strain (fix ESPH_PLASTIC) is kept while a type has a yield
-   stress or a particle has some; else it is dropped (nothing to keep, and a
-   run that has it made for a restart file's sake then equals the run that
-   never had it)
+   stress or a particle has some, the switched viscosity's alpha (fix
+   ESPH_VISC) while visc/switch is on or a particle has one; else each is
+   dropped (nothing to keep, and a run that has it made for a restart
+   file's sake then equals the run that never had it)
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::init_plastic()
 {
+  int yielding = 0;
   for (int t = 1; t <= atom->ntypes; t++)
-    if (setflag[t][t] && yield[t] > 0.0) return;
+    if (setflag[t][t] && yield[t] > 0.0) yielding = 1;
+  if (!yielding) drop_if_zero("esph_epsp", ESPHState::FIX_ID_PLASTIC);
+  if (!vswitch_flag) drop_if_zero("esph_alpha", ESPHState::FIX_ID_VISC);
+}
+
+/* ----------------------------------------------------------------------
+   deletes the internal fix fixid of the per-atom double name where it is
+   0 for every atom
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::drop_if_zero(const char *name, const char *fixid)
+{
   int flag, cols;
-  const int k = atom->find_custom("esph_epsp", flag, cols);
-  if (k < 0 || !modify->get_fix_by_id(ESPHState::FIX_ID_PLASTIC)) return;
-  const double *epsp = atom->dvector[k];
+  const int k = atom->find_custom(name, flag, cols);
+  if (k < 0 || !modify->get_fix_by_id(fixid)) return;
+  const double *value = atom->dvector[k];
   int mine = 0, any;
   for (int i = 0; i < atom->nlocal; i++)
-    if (epsp[i] != 0.0) mine = 1;
+    if (value[i] != 0.0) mine = 1;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) modify->delete_fix(ESPHState::FIX_ID_PLASTIC);
+  if (!any) modify->delete_fix(fixid);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -64,6 +64,7 @@ class PairESPHSolid : public Pair {
  protected:
   void init_recon();
   void init_plastic();
+  void drop_if_zero(const char *, const char *);
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
   // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
   // plain forces less their torque)

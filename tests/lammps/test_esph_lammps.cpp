@@ -650,28 +650,35 @@ TEST_F(ESPHTest, ReconOnlyWhereUsable)
 // read_restart before every stage after the first; x and v of every atom must agree to
 // round-off
 static std::vector<double> staged_restart_check(LAMMPS *lmp, const std::vector<std::string> &coeffs,
-                                                const std::vector<std::string> &before, int nsteps)
+                                                const std::vector<std::string> &before, int nsteps,
+                                                const std::vector<std::string> &styles = {})
 {
   auto command = [lmp](const std::string &line) {
     lmp->input->one(line);
   };
   const std::string pc = "pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69 ";
-  for (const auto &line : utils::split_lines(setup_impact(50.0, "", coeffs[0]))) command(line);
+  auto style = [&styles](size_t k) {
+    return styles.empty() ? std::string() : styles[k];
+  };
+  for (const auto &line : utils::split_lines(setup_impact(50.0, style(0), coeffs[0])))
+    command(line);
   command(fmt::format("run {} post no", nsteps));
   for (size_t k = 1; k < coeffs.size(); k++) {
+    if (!styles.empty()) command("pair_style esph/solid 1e-4 " + style(k));
     command(pc + coeffs[k]);
     for (const auto &line : utils::split_lines(before[k])) command(line);
     command(fmt::format("run {} post no", nsteps));
   }
   const auto full = snapshot(lmp);
   command("clear");
-  for (const auto &line : utils::split_lines(setup_impact(50.0, "", coeffs[0]))) command(line);
+  for (const auto &line : utils::split_lines(setup_impact(50.0, style(0), coeffs[0])))
+    command(line);
   command(fmt::format("run {} post no", nsteps));
   for (size_t k = 1; k < coeffs.size(); k++) {
     command("write_restart test_esph_staged.restart");
     command("clear");
     command("read_restart test_esph_staged.restart");
-    command("pair_style esph/solid 1e-4");
+    command("pair_style esph/solid 1e-4 " + style(k));
     command(pc + coeffs[k]);
     command("fix int all esph/integrate cfl 0.3");
     command("fix bnd all esph/boundary spacing 1e-4");
@@ -710,6 +717,17 @@ TEST_F(ESPHTest, ReconOffStageRestartIsExact)
 {
   BEGIN_HIDE_OUTPUT();
   const auto diff = staged_restart_check(lmp, {"", "yield 2e8", ""}, {"", "", ""}, 20);
+  END_HIDE_OUTPUT();
+  expect_same_run(diff);
+}
+
+// visc/switch, then a run without it, then with it again: the switched alpha outlives the
+// run without it, also through a restart (the restarted run had lost it, 1.5e-4 off)
+TEST_F(ESPHTest, SwitchOffStageRestartIsExact)
+{
+  BEGIN_HIDE_OUTPUT();
+  const auto diff = staged_restart_check(lmp, {"", "", ""}, {"", "", ""}, 20,
+                                         {"visc/switch 0.1 0.2", "", "visc/switch 0.1 0.2"});
   END_HIDE_OUTPUT();
   expect_same_run(diff);
 }
