@@ -91,15 +91,19 @@ void ESPHState::ensure_recon(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
-void ESPHState::drop_recon(LAMMPS *lmp)
+void ESPHState::drop_optional(LAMMPS *lmp, const char *fixid, const char *name)
 {
   int flag, cols;
-  if (lmp->modify->get_fix_by_id(FIX_ID_RECON) &&
-      lmp->atom->find_custom("esph_drec", flag, cols) >= 0)
-    lmp->modify->delete_fix(FIX_ID_RECON);
-  if (lmp->modify->get_fix_by_id(FIX_ID_RECON_USED) &&
-      lmp->atom->find_custom("esph_drec_used", flag, cols) >= 0)
-    lmp->modify->delete_fix(FIX_ID_RECON_USED);
+  if (lmp->modify->get_fix_by_id(fixid) && lmp->atom->find_custom(name, flag, cols) >= 0)
+    lmp->modify->delete_fix(fixid);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHState::drop_recon(LAMMPS *lmp)
+{
+  drop_optional(lmp, FIX_ID_RECON, "esph_drec");
+  drop_optional(lmp, FIX_ID_RECON_USED, "esph_drec_used");
 }
 
 /* ---------------------------------------------------------------------- */

@@ -73,6 +73,9 @@ class ESPHState {
   // create the reconstruction fix (d2_esph_drec) if it does not exist yet: only scenes
   // with visc/recon carry it
   static void ensure_recon(LAMMPS *lmp);
+  // deletes internal fix fixid where it exists and holds ESPH's per-atom property name (a
+  // user's fix of that ID is left alone)
+  static void drop_optional(LAMMPS *lmp, const char *fixid, const char *name);
   // deletes ESPH_RECON and ESPH_RECON_USED where they exist and are ESPH's
   static void drop_recon(LAMMPS *lmp);
   // create the normal-cone fix (d2_esph_cone) if it does not exist yet: only scenes with

@@ -86,7 +86,6 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   comm_stage = COMM_HOIST;
   comm_bnd = 0;
   nforward = nreverse = 0;
-  recon_warned = 0;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);
@@ -400,12 +399,13 @@ void PairESPHSolid::settings(int narg, char **arg)
   // rates are taken up before a command between read_restart and the run moves atoms
   // (delete_atoms); a run that has no use for them drops them (init_recon())
   if (recon_set) ESPHState::ensure_recon(lmp);
-  // so is the plastic strain, which a restart file may hold although no type of this scene
-  // has a yield stress yet (a later run may give one again): made to take it up, dropped by
-  // init_plastic() where it is 0 everywhere and no type has a yield stress
-  if (modify->nfix_restart_peratom > 0) ESPHState::ensure_plastic(lmp);
-  // and the switched viscosity's alpha (a later run may switch it on again)
-  if (modify->nfix_restart_peratom > 0) ESPHState::ensure_visc(lmp);
+  // so are the plastic strain and the switched viscosity's alpha, which a restart file may
+  // hold although this scene has no yield stress or switch yet (a later run may give them
+  // again): made to take them up, dropped by drop_unused_state() where they are 0 everywhere
+  if (modify->nfix_restart_peratom > 0) {
+    ESPHState::ensure_plastic(lmp);
+    ESPHState::ensure_visc(lmp);
+  }
   // and the normal cones (carried from one force computation to the next)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
@@ -632,7 +632,7 @@ void PairESPHSolid::init_style()
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
   init_recon();
-  init_plastic();
+  drop_unused_state();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
   ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
@@ -690,7 +690,7 @@ void PairESPHSolid::init_recon()
    file's sake then equals the run that never had it)
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::init_plastic()
+void PairESPHSolid::drop_unused_state()
 {
   int yielding = 0;
   for (int t = 1; t <= atom->ntypes; t++)
@@ -708,13 +708,13 @@ void PairESPHSolid::drop_if_zero(const char *name, const char *fixid)
 {
   int flag, cols;
   const int k = atom->find_custom(name, flag, cols);
-  if (k < 0 || !modify->get_fix_by_id(fixid)) return;
+  if (k < 0) return;
   const double *value = atom->dvector[k];
   int mine = 0, any;
   for (int i = 0; i < atom->nlocal; i++)
     if (value[i] != 0.0) mine = 1;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) modify->delete_fix(fixid);
+  if (!any) ESPHState::drop_optional(lmp, fixid, name);
 }
 
 /* ---------------------------------------------------------------------- */

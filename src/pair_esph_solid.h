@@ -63,7 +63,7 @@ class PairESPHSolid : public Pair {
 
  protected:
   void init_recon();
-  void init_plastic();
+  void drop_unused_state();
   void drop_if_zero(const char *, const char *);
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
   // gradient), bonet/lok (also the forces and the energy), torquefree (corrected, and the
@@ -82,8 +82,8 @@ class PairESPHSolid : public Pair {
   double vswitch_min;         // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;           // its decay constant l: tau_i = h_i / (l c_i)
   int recon_set;              // visc/recon as set: RECON_OFF, RECON_VANLEER (default), RECON_MINMOD
-  int recon_flag;             // the reconstruction in use (init_style): recon_set, or off where
-                              // no type can use it (all elastic types have a yield stress)
+  int recon_flag;             // the reconstruction in use (init_recon()): recon_set, or off where
+                              // no real particle is of a deformable type without a yield stress
   int recon_given;            // visc/recon was given (not the default)
   int recon_warned;           // the warning that visc/recon has no effect was given
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
