@@ -40,6 +40,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -86,6 +87,13 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   comm_stage = COMM_HOIST;
   comm_bnd = 0;
   nforward = nreverse = 0;
+  simd_flag = simd_active = 0;
+  listfull = nullptr;
+  simd_pk = nullptr;
+  simd_pk_size = 0;
+  simd_stride = 0;
+  simd_ncalls = -1;
+  simd_sep = -1;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);
@@ -124,6 +132,7 @@ void PairESPHSolid::set_defaults()
   xsph_flag = 0;
   xsph_eps = 0.0;
   friction = 0.0;
+  simd_set = 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -132,6 +141,7 @@ PairESPHSolid::~PairESPHSolid()
 {
   if (copymode) return;
   delete state;
+  memory->destroy(simd_pk);
   memory->destroy(acc);
   memory->destroy(hq);
   memory->destroy(drho);
@@ -322,6 +332,10 @@ void PairESPHSolid::settings(int narg, char **arg)
                    arg[iarg + 3]);
       astress_flag = (astress_eps > 0.0);
       iarg += 4;
+    } else if (strcmp(arg[iarg], "simd") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid simd", error);
+      simd_set = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "xsph") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid xsph", error);
       xsph_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -638,6 +652,38 @@ void PairESPHSolid::init_style()
   // per-atom contact output only while a compute esph/atom asks for it (its init() follows)
   atom_contact_flag = 0;
   neighbor->add_request(this);
+  // the bulk pairs in vector registers: from a full list (pair_esph_solid_simd.cpp)
+  simd_flag = simd_set && simd_cpu() && simd_physics();
+  listfull = nullptr;
+  simd_ncalls = -1;
+  if (simd_flag) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
+}
+
+/* ----------------------------------------------------------------------
+   the half list of every pass, and the full list of the vector pass
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_list(int id, NeighList *ptr)
+{
+  if (id == 1)
+    listfull = ptr;
+  else
+    list = ptr;
+}
+
+/* ----------------------------------------------------------------------
+   the vector pass implements the bulk pairs of the default physics and
+   its usual options: constant h, the cubic B-spline, gradient plain or
+   corrected, the viscosity with its reconstruction or switch, heat
+   transfer. With the artificial stress, XSPH, a variable h, another
+   kernel, gradient bonet/lok or torquefree or rigid types every pair goes
+   through the scalar loop
+------------------------------------------------------------------------- */
+
+bool PairESPHSolid::simd_physics() const
+{
+  return kernel == CUBIC && !hvar_flag && !astress_flag && !xsph_flag && !rigid_flag &&
+      correct_flag <= CORRECT_RATE;
 }
 
 /* ----------------------------------------------------------------------
@@ -961,6 +1007,11 @@ void PairESPHSolid::compute(int eflag, int vflag)
   if (astress_flag) artificial_stress();
 
   if (atom_contact_flag) atom_contact_clear();
+  simd_active = simd_ready();
+  if (simd_active) {
+    simd_pack();
+    simd_split(bnd);
+  }
   pair_pass(bnd);
 
   if (force->newton_pair) {
@@ -1002,6 +1053,7 @@ void PairESPHSolid::pair_pass(int bnd)
   for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
   LoopOut out{0, list->inum, acc, atom->f, atom_contact, &body_tally, 0, 0, 0.0};
   run_pair_loop(bnd, out);
+  if (simd_active) bulk_pass(bnd, out);
   ncontact_pairs = out.ncontact;
   ntouch_pairs = out.ntouch;
   fcontact = out.fcontact;

@@ -44,6 +44,7 @@ class PairESPHSolid : public Pair {
   void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
+  void init_list(int, class NeighList *) override;
   double init_one(int, int) override;
   void setup() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -102,6 +103,19 @@ class PairESPHSolid : public Pair {
   int xsph_flag;         // XSPH: particles move with the velocity smoothed over their body
   double xsph_eps;       // its strength
   double friction;       // Coulomb friction coefficient between bodies (0: frictionless)
+  int simd_set;          // simd keyword: the bulk pairs in vector registers where possible
+  int simd_flag;         // this run uses the vector pass (init_style(): simd_set, the CPU
+                         // and the physics allow it); it has a full list next to the half one
+  int simd_active;       // this force computation uses it (simd_ready())
+  class NeighList *listfull;    // full neighbour list of the vector pass, or nullptr
+  double *simd_pk;              // its packed per-atom rows (simd_pack())
+  bigint simd_pk_size;
+  int simd_stride;
+  // the half list's other pairs, for the scalar loop: those of entry ii at
+  // simd_j[simd_first[ii] .. simd_first[ii + 1]) (simd_split(), at each new list)
+  std::vector<int> simd_first, simd_j;
+  bigint simd_ncalls;
+  int simd_sep;
 
   // per-type material
   ESPH::EOS *eos;
@@ -197,6 +211,13 @@ class PairESPHSolid : public Pair {
   void atom_contact_clear();
   virtual void pair_pass(int);
   void run_pair_loop(int, LoopOut &);
+  // the bulk pairs in vector registers (pair_esph_solid_simd.cpp)
+  static bool simd_cpu();
+  bool simd_physics() const;
+  bool simd_ready() const;
+  void simd_pack();
+  void simd_split(int);
+  void bulk_pass(int, LoopOut &);
   template <int BND> void run_hvar(LoopOut &);
   template <int BND, int HVAR> void run_heat(LoopOut &);
   template <int BND, int HVAR, int HEAT> void run_corr(LoopOut &);

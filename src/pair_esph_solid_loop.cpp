@@ -98,6 +98,11 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
+  // the bulk pairs (real-real, not across bodies) are the vector pass's (bulk_pass()): this
+  // loop then takes the other pairs from the split list (simd_split())
+  const int *const split_first = simd_active ? simd_first.data() : nullptr;
+  const int *const split_j = simd_active ? simd_j.data() : nullptr;
+
   const int iifrom = out.iifrom, iito = out.iito;
   // x is one contiguous array (memory->create): atom j's position at 3 j
   const double *const xflat = x ? x[0] : nullptr;
@@ -118,8 +123,8 @@ void PairESPHSolid::pair_loop(LoopOut &out)
     double mci[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double avhi = 0.0, heati = 0.0;
     double xsi[3] = {0.0, 0.0, 0.0};
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
+    const int *jlist = split_first ? split_j + split_first[ii] : firstneigh[i];
+    const int jnum = split_first ? split_first[ii + 1] - split_first[ii] : numneigh[i];
 
     // the neighbours in blocks of NBLOCK: first the pairs within the cutoff and, at
     // constant h, their kernel values, then the physics of each pair. The square root and

@@ -212,6 +212,8 @@ void PairESPHSolidOMP::pair_pass(int bnd)
         LoopOut out{t.from, t.to, t.acc_rows.data(), t.f_rows.data(), t.c_rows.data(), &t.tally, 0,
                     0,      0.0};
         run_pair_loop(bnd, out);
+        // the thread's own particles' bulk pairs: their rows only
+        if (simd_active) bulk_pass(bnd, out);
         t.ncontact = out.ncontact;
         t.ntouch = out.ntouch;
         t.fcontact = out.fcontact;

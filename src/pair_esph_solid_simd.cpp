@@ -1,0 +1,469 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   pair esph/solid: the bulk pairs in vector registers (keyword simd)
+
+   A bulk pair is one of two real particles of the same body (of any two
+   bodies with contact off): the pair that most neighbours are and that
+   needs none of the contact or boundary logic. With simd yes, on a CPU
+   with AVX-512, the scalar loop (pair_esph_solid_loop.cpp) skips them in
+   the half list and this pass takes them from a full neighbour list:
+   eight neighbours of one particle per vector, with only the particle's
+   own sums written (no writes to j, so no scatter and no conflicts; every
+   pair is computed from both sides, each side with the scalar loop's
+   formulas). The answer is the scalar loop's to round-off: the sums are
+   in another order and the compiler may fuse multiply-adds.
+------------------------------------------------------------------------- */
+
+#include "pair_esph_solid.h"
+#include "pair_esph_solid_slots.h"
+
+#include "atom.h"
+#include "esph_kernel.h"
+#include "esph_state.h"
+#include "esph_threads.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <climits>
+#include <vector>
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__INTEL_COMPILER)
+#define ESPH_SIMD_AVX512 1
+#include <immintrin.h>
+#endif
+
+using namespace LAMMPS_NS;
+using namespace ESPH;
+using namespace ESPHSolid;
+
+// the packed row of an atom (simd_pack()), blocks of 8 doubles that bulk_atom() loads
+// whole: 16 doubles, 24 with the reconstruction or the viscosity switch, 32 with heat
+// transfer. A boundary particle's row holds its position, mass 0 and body only
+static constexpr int PK_X = 0, PK_M = 3, PK_V = 4, PK_RHO = 7, PK_C = 8, PK_A = 9, PK_BODY = 15,
+                     PK_D = 16, PK_ALPHA = 22, PK_E = 24, PK_ZETA = 25, PK_STRIDE_MAX = 32;
+
+/* ----------------------------------------------------------------------
+   the CPU runs the vector pass (valgrind reports no AVX-512: scalar there)
+------------------------------------------------------------------------- */
+
+bool PairESPHSolid::simd_cpu()
+{
+#ifdef ESPH_SIMD_AVX512
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512dq");
+#else
+  return false;
+#endif
+}
+
+#ifdef ESPH_SIMD_AVX512
+
+namespace {
+
+// what one particle's bulk pairs read
+struct BulkCtx {
+  const double *pk;    // packed rows (PK_*), stride doubles per atom
+  int stride;
+  double norm_hinv, hinv, h0, epsh2;    // kernel and viscosity constants (constant h)
+  double alpha, beta, beta_ratio, fconv;
+  int recon;    // RECON_OFF, RECON_VANLEER, RECON_MINMOD
+  int vswitch, heat;
+  int sep;    // pairs of different bodies are not bulk pairs (contact on)
+};
+
+#define ESPH_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma")))
+#define ESPH_AVX512_INLINE ESPH_AVX512 static inline __attribute__((always_inline))
+
+ESPH_AVX512_INLINE __m512d bcast(double a)
+{
+  return _mm512_set1_pd(a);
+}
+
+/* ----------------------------------------------------------------------
+   columns c[0..7] of 8 columns [off, off + 8) of the packed rows of atoms
+   j[0..7]: eight row loads and an 8 x 8 transpose (24 shuffles), which
+   costs less than eight gathers
+------------------------------------------------------------------------- */
+
+ESPH_AVX512_INLINE void load_cols(const double *pk, int stride, const int *j, int off, __m512d *c)
+{
+  const __m512d r0 = _mm512_loadu_pd(pk + (size_t) j[0] * stride + off);
+  const __m512d r1 = _mm512_loadu_pd(pk + (size_t) j[1] * stride + off);
+  const __m512d r2 = _mm512_loadu_pd(pk + (size_t) j[2] * stride + off);
+  const __m512d r3 = _mm512_loadu_pd(pk + (size_t) j[3] * stride + off);
+  const __m512d r4 = _mm512_loadu_pd(pk + (size_t) j[4] * stride + off);
+  const __m512d r5 = _mm512_loadu_pd(pk + (size_t) j[5] * stride + off);
+  const __m512d r6 = _mm512_loadu_pd(pk + (size_t) j[6] * stride + off);
+  const __m512d r7 = _mm512_loadu_pd(pk + (size_t) j[7] * stride + off);
+  const __m512d t0 = _mm512_unpacklo_pd(r0, r1), t1 = _mm512_unpackhi_pd(r0, r1);
+  const __m512d t2 = _mm512_unpacklo_pd(r2, r3), t3 = _mm512_unpackhi_pd(r2, r3);
+  const __m512d t4 = _mm512_unpacklo_pd(r4, r5), t5 = _mm512_unpackhi_pd(r4, r5);
+  const __m512d t6 = _mm512_unpacklo_pd(r6, r7), t7 = _mm512_unpackhi_pd(r6, r7);
+  const __m512d u0 = _mm512_shuffle_f64x2(t0, t2, 0x88), u1 = _mm512_shuffle_f64x2(t1, t3, 0x88);
+  const __m512d u2 = _mm512_shuffle_f64x2(t0, t2, 0xdd), u3 = _mm512_shuffle_f64x2(t1, t3, 0xdd);
+  const __m512d u4 = _mm512_shuffle_f64x2(t4, t6, 0x88), u5 = _mm512_shuffle_f64x2(t5, t7, 0x88);
+  const __m512d u6 = _mm512_shuffle_f64x2(t4, t6, 0xdd), u7 = _mm512_shuffle_f64x2(t5, t7, 0xdd);
+  c[0] = _mm512_shuffle_f64x2(u0, u4, 0x88);
+  c[4] = _mm512_shuffle_f64x2(u0, u4, 0xdd);
+  c[1] = _mm512_shuffle_f64x2(u1, u5, 0x88);
+  c[5] = _mm512_shuffle_f64x2(u1, u5, 0xdd);
+  c[2] = _mm512_shuffle_f64x2(u2, u6, 0x88);
+  c[6] = _mm512_shuffle_f64x2(u2, u6, 0xdd);
+  c[3] = _mm512_shuffle_f64x2(u3, u7, 0x88);
+  c[7] = _mm512_shuffle_f64x2(u3, u7, 0xdd);
+}
+
+// recon_slope() of pair_esph_solid_slots.h: x . D x with D in Voigt order
+ESPH_AVX512_INLINE __m512d slope(const __m512d *d, __m512d x0, __m512d x1, __m512d x2)
+{
+  return d[0] * x0 * x0 + d[1] * x1 * x1 + d[2] * x2 * x2 +
+      2.0 * (d[3] * x0 * x1 + d[4] * x0 * x2 + d[5] * x1 * x2);
+}
+
+/* ----------------------------------------------------------------------
+   the bulk pairs of particle i among its full list's jnum neighbours
+   jlist, eight at a time: the scalar loop's same-body branch (stress
+   force, Monaghan-Gingold viscosity with its reconstruction or switch, G,
+   viscous heating, M of gradient corrected, heat transfer), i's side
+   only, into fi and ai. A lane whose neighbour is not a bulk partner
+   (beyond the kernel's support, a boundary particle, another body) has
+   dW = 0 and mask-zeroed viscosity and heat: it adds exact zeros
+------------------------------------------------------------------------- */
+
+template <int CORR>
+ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, double *fi,
+                           double *ai)
+{
+  const double *pi_ = c.pk + (size_t) i * c.stride;
+  const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
+  const __m512d xi = bcast(pi_[PK_X]), yi = bcast(pi_[PK_X + 1]), zi = bcast(pi_[PK_X + 2]);
+  const __m512d vi0 = bcast(pi_[PK_V]), vi1 = bcast(pi_[PK_V + 1]), vi2 = bcast(pi_[PK_V + 2]);
+  const __m512d rhoi = bcast(pi_[PK_RHO]), ci = bcast(pi_[PK_C]), mi = bcast(pi_[PK_M]);
+  const __m512d bi = bcast(pi_[PK_BODY]);
+  const __m256i nmask = _mm256_set1_epi32(NEIGHMASK);
+  const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv), h0 = bcast(c.h0);
+  const __m512d epsh2 = bcast(c.epsh2);
+  __m512d Ai[6], Di[6];
+  for (int k = 0; k < 6; k++) Ai[k] = bcast(pi_[PK_A + k]);
+  for (int k = 0; k < 6; k++) Di[k] = bcast(c.recon ? pi_[PK_D + k] : 0.0);
+  const __m512d alphai = bcast(c.vswitch ? pi_[PK_ALPHA] : 0.0);
+  const __m512d ei = bcast(c.heat ? pi_[PK_E] : 0.0), zetai = bcast(c.heat ? pi_[PK_ZETA] : 0.0);
+
+  __m512d sf0 = zero, sf1 = zero, sf2 = zero, savh = zero, sheat = zero;
+  __m512d sg0 = zero, sg1 = zero, sg2 = zero, sg3 = zero, sg4 = zero, sg5 = zero, sg6 = zero,
+          sg7 = zero, sg8 = zero;
+  __m512d sm0 = zero, sm1 = zero, sm2 = zero, sm3 = zero, sm4 = zero, sm5 = zero, sm6 = zero,
+          sm7 = zero, sm8 = zero;
+
+  alignas(32) int js[8];
+  for (int b = 0; b < jnum; b += 8) {
+    const int n = (jnum - b < 8) ? jnum - b : 8;
+    const __mmask8 m = (__mmask8) ((1u << n) - 1u);
+    // the lanes past the list's end read atom 0's row and are masked off
+    _mm256_store_si256((__m256i *) js,
+                       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), nmask));
+    __m512d c0[8], c1[8];
+    load_cols(c.pk, c.stride, js, 0, c0);
+    load_cols(c.pk, c.stride, js, 8, c1);
+    const __m512d d0 = xi - c0[0], d1 = yi - c0[1], d2 = zi - c0[2];
+    const __m512d mj = c0[3];
+    const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
+    // bulk partners: real, of the same body (with contact on), within the support and not
+    // coinciding (there the gradient vanishes); the cubic B-spline's dW/dr / r
+    // (kernel_eval), 0 in every other lane
+    __mmask8 bulk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_GT_OQ);
+    if (c.sep) bulk = _mm512_mask_cmp_pd_mask(bulk, c1[7], bi, _CMP_EQ_OQ);
+    const __m512d r = _mm512_sqrt_pd(rsq);
+    const __m512d q = r * hinv;
+    const __mmask8 in = _mm512_mask_cmp_pd_mask(bulk, q, two, _CMP_LT_OQ);
+    const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
+    if (!live) continue;
+    const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
+    const __m512d t = two - q;
+    const __m512d dwdq = _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
+    const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
+    const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
+    const __m512d v0 = vi0 - c0[4], v1 = vi1 - c0[5], v2 = vi2 - c0[6];
+    const __m512d rhoj = c0[7], cj = c1[0];
+
+    // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W
+    const __m512d T0 = Ai[0] + c1[1], T1 = Ai[1] + c1[2], T2 = Ai[2] + c1[3];
+    const __m512d T3 = Ai[3] + c1[4], T4 = Ai[4] + c1[5], T5 = Ai[5] + c1[6];
+    // (rows of boundary particles hold zeros here: every product below stays finite)
+    const __m512d Tg0 = T0 * g0 + T3 * g1 + T4 * g2;
+    const __m512d Tg1 = T3 * g0 + T1 * g1 + T5 * g2;
+    const __m512d Tg2 = T4 * g0 + T5 * g1 + T2 * g2;
+
+    // Monaghan-Gingold viscosity of the approaching pairs (eqs. 4-7)
+    const __m512d vr = v0 * d0 + v1 * d1 + v2 * d2;
+    const __mmask8 appr = _mm512_mask_cmp_pd_mask(live, vr, zero, _CMP_LT_OQ);
+    __m512d c2[8], c3[8];
+    if (appr && (c.recon || c.vswitch)) load_cols(c.pk, c.stride, js, 16, c2);
+    if (c.heat) load_cols(c.pk, c.stride, js, 24, c3);
+    __m512d pi = zero;
+    if (appr) {
+      __m512d vrv = vr;
+      if (c.recon) {
+        // the velocities reconstructed to the pair's midpoint, limited (recon_vr())
+        const __m512d a_i = slope(Di, d0, d1, d2), a_j = slope(c2, d0, d1, d2);
+        const __m512d p = a_i * a_j;
+        const __mmask8 pos = _mm512_mask_cmp_pd_mask(appr, p, zero, _CMP_GT_OQ);
+        if (pos) {
+          __m512d phi;
+          if (c.recon == 1) {    // RECON_VANLEER
+            const __m512d s = a_i + a_j;
+            phi = _mm512_maskz_div_pd(pos, 4.0 * p, s * s);
+          } else {
+            const __m512d fa = _mm512_abs_pd(a_i), fb = _mm512_abs_pd(a_j);
+            phi = _mm512_maskz_div_pd(pos, _mm512_min_pd(fa, fb), _mm512_max_pd(fa, fb));
+          }
+          vrv = _mm512_mask_sub_pd(vr, pos, vr, 0.5 * phi * (a_i + a_j));
+        }
+        vrv = _mm512_min_pd(vrv, zero);
+      }
+      const __m512d mu = h0 * vrv / (rsq + epsh2);
+      __m512d al = bcast(c.alpha), be = bcast(c.beta);
+      if (c.vswitch) {
+        al = 0.5 * (alphai + c2[6]);
+        be = c.beta_ratio * al;
+      }
+      pi =
+          _mm512_maskz_div_pd(appr, -al * 0.5 * (ci + cj) * mu + be * mu * mu, 0.5 * (rhoi + rhoj));
+    }
+    const __m512d avh = 0.5 * pi * (v0 * g0 + v1 * g1 + v2 * g2);
+    const __m512d mm = mi * mj * c.fconv;
+    sf0 += mm * (Tg0 - pi * g0);
+    sf1 += mm * (Tg1 - pi * g1);
+    sf2 += mm * (Tg2 - pi * g2);
+
+    // G = sum_j m_j (v_j - v_i) (x) grad_i W
+    const __m512d w0 = -mj * v0, w1 = -mj * v1, w2 = -mj * v2;
+    sg0 += w0 * g0;
+    sg1 += w0 * g1;
+    sg2 += w0 * g2;
+    sg3 += w1 * g0;
+    sg4 += w1 * g1;
+    sg5 += w1 * g2;
+    sg6 += w2 * g0;
+    sg7 += w2 * g1;
+    sg8 += w2 * g2;
+    savh += mj * avh;
+    if (CORR == 1) {
+      // M = sum_j m_j (x_j - x_i) (x) grad_i W
+      const __m512d x0 = -mj * d0, x1 = -mj * d1, x2 = -mj * d2;
+      sm0 += x0 * g0;
+      sm1 += x0 * g1;
+      sm2 += x0 * g2;
+      sm3 += x1 * g0;
+      sm4 += x1 * g1;
+      sm5 += x1 * g2;
+      sm6 += x2 * g0;
+      sm7 += x2 * g1;
+      sm8 += x2 * g2;
+    }
+    if (c.heat) {
+      // artificial heat transfer (eqs. 8-10)
+      const __m512d zbar = 0.5 * (zetai + c3[1]);
+      const __m512d rbar = 0.5 * (rhoi + rhoj);
+      const __m512d heat =
+          _mm512_maskz_div_pd(live, 2.0 * zbar / rbar * (ei - c3[0]) * dw * rsq, rsq + epsh2);
+      sheat += mj * heat;
+    }
+  }
+
+  fi[0] += _mm512_reduce_add_pd(sf0);
+  fi[1] += _mm512_reduce_add_pd(sf1);
+  fi[2] += _mm512_reduce_add_pd(sf2);
+  ai[A_G] += _mm512_reduce_add_pd(sg0);
+  ai[A_G + 1] += _mm512_reduce_add_pd(sg1);
+  ai[A_G + 2] += _mm512_reduce_add_pd(sg2);
+  ai[A_G + 3] += _mm512_reduce_add_pd(sg3);
+  ai[A_G + 4] += _mm512_reduce_add_pd(sg4);
+  ai[A_G + 5] += _mm512_reduce_add_pd(sg5);
+  ai[A_G + 6] += _mm512_reduce_add_pd(sg6);
+  ai[A_G + 7] += _mm512_reduce_add_pd(sg7);
+  ai[A_G + 8] += _mm512_reduce_add_pd(sg8);
+  ai[A_AVHEAT] += _mm512_reduce_add_pd(savh);
+  if (CORR == 1) {
+    ai[A_M] += _mm512_reduce_add_pd(sm0);
+    ai[A_M + 1] += _mm512_reduce_add_pd(sm1);
+    ai[A_M + 2] += _mm512_reduce_add_pd(sm2);
+    ai[A_M + 3] += _mm512_reduce_add_pd(sm3);
+    ai[A_M + 4] += _mm512_reduce_add_pd(sm4);
+    ai[A_M + 5] += _mm512_reduce_add_pd(sm5);
+    ai[A_M + 6] += _mm512_reduce_add_pd(sm6);
+    ai[A_M + 7] += _mm512_reduce_add_pd(sm7);
+    ai[A_M + 8] += _mm512_reduce_add_pd(sm8);
+  }
+  if (c.heat) ai[A_HEAT] += _mm512_reduce_add_pd(sheat);
+}
+
+}    // namespace
+
+#endif
+
+/* ----------------------------------------------------------------------
+   the vector pass is usable in this force computation: the full list next
+   to the half one, and row indices that fit its 32-bit index arithmetic
+------------------------------------------------------------------------- */
+
+bool PairESPHSolid::simd_ready() const
+{
+  if (!simd_flag || !listfull || !list || listfull->inum != list->inum) return false;
+  const bigint nall = (bigint) atom->nlocal + atom->nghost;
+  return nall * PK_STRIDE_MAX < (bigint) INT_MAX;
+}
+
+/* ----------------------------------------------------------------------
+   the packed rows of the vector pass, one per atom (owned and ghost):
+   position, mass, velocity, density, sound speed, sigma / rho^2, body,
+   and with the reconstruction, the switch or heat transfer D_i, alpha_i,
+   e and zeta
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::simd_pack()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  simd_stride = heat_flag ? PK_STRIDE_MAX : ((recon_flag || vswitch_flag) ? PK_E : PK_D);
+  const bigint need = (bigint) nall * simd_stride;
+  if (need > simd_pk_size) {
+    memory->destroy(simd_pk);
+    simd_pk_size = need + need / 8;
+    memory->create(simd_pk, simd_pk_size, "pair:simd_pk");
+  }
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int stride = simd_stride;
+  const int qal = vswitch_flag ? (astress_flag ? Q_ALPHA_AST : Q_ALPHA) : -1;
+  const int qd = recon_flag ? qcol_d : -1;
+  double *const pk = simd_pk;
+  double **const q = hq;
+  ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
+    for (int i = from; i < to; i++) {
+      double *p = pk + (size_t) i * stride;
+      for (int k = 0; k < stride; k++) p[k] = 0.0;
+      p[PK_X] = x[i][0];
+      p[PK_X + 1] = x[i][1];
+      p[PK_X + 2] = x[i][2];
+      p[PK_BODY] = body ? body[i] : 0.0;
+      if (!(rmass[i] > 0.0)) continue;
+      const double *qi = q[i];
+      p[PK_M] = rmass[i];
+      p[PK_V] = qi[Q_V];
+      p[PK_V + 1] = qi[Q_V + 1];
+      p[PK_V + 2] = qi[Q_V + 2];
+      p[PK_RHO] = qi[Q_RHO];
+      p[PK_C] = qi[Q_C];
+      for (int k = 0; k < 6; k++) p[PK_A + k] = qi[Q_A + k];
+      if (qd >= 0)
+        for (int k = 0; k < 6; k++) p[PK_D + k] = qi[qd + k];
+      if (qal >= 0) p[PK_ALPHA] = qi[qal];
+      if (stride > PK_E) {
+        p[PK_E] = qi[Q_E];
+        p[PK_ZETA] = qi[Q_ZETA];
+      }
+    }
+  });
+}
+
+/* ----------------------------------------------------------------------
+   the half list without its bulk pairs (the scalar loop's list), made
+   anew with each new neighbour list: the pairs of a boundary and a real
+   particle of one body, those across bodies
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::simd_split(int bnd)
+{
+  const int sep = bnd && (contact != CONTACT_OFF);
+  const int inum = list->inum;
+  if (simd_ncalls == neighbor->ncalls && simd_sep == sep && (int) simd_first.size() == inum + 1)
+    return;
+  simd_ncalls = neighbor->ncalls;
+  simd_sep = sep;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  simd_first.resize(inum + 1);
+  simd_j.clear();
+  for (int ii = 0; ii < inum; ii++) {
+    simd_first[ii] = (int) simd_j.size();
+    const int i = ilist[ii];
+    const int ireal = rmass[i] > 0.0;
+    const int *jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int jreal = rmass[j] > 0.0;
+      const int same = (body[j] == body[i]);
+      // the vector pass's
+      if (ireal && jreal && (!sep || same)) continue;
+      // pairs the scalar loop skips: two boundary particles of one body (or with another
+      // rule than contact solid), a boundary and a real particle of different bodies
+      if (bnd && !ireal && !jreal && (contact != CONTACT_SOLID || same)) continue;
+      if (bnd && (ireal != jreal) && !same) continue;
+      simd_j.push_back(jlist[jj]);
+    }
+  }
+  simd_first[inum] = (int) simd_j.size();
+}
+
+/* ----------------------------------------------------------------------
+   the bulk pairs of the real particles of the half list's entries
+   [iifrom, iito) (the rows of out are theirs), from the full list
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
+{
+#ifdef ESPH_SIMD_AVX512
+  const double *rmass = state->rmass;
+  const int *ilist = list->ilist;
+  const int *numneigh = listfull->numneigh;
+  int **firstneigh = listfull->firstneigh;
+
+  BulkCtx c;
+  c.pk = simd_pk;
+  c.stride = simd_stride;
+  c.hinv = 1.0 / h0;
+  c.norm_hinv = kernel_norm(kernel, dim, h0) * c.hinv;
+  c.h0 = h0;
+  c.epsh2 = eps * h0 * h0;
+  c.alpha = alpha;
+  c.beta = beta;
+  c.beta_ratio = (vswitch_flag && alpha > 0.0) ? beta / alpha : 0.0;
+  c.fconv = units.force;
+  c.recon = recon_flag;
+  c.vswitch = vswitch_flag;
+  c.heat = heat_flag;
+  c.sep = bnd && (contact != CONTACT_OFF);
+  const int corr = (correct_flag == CORRECT_RATE);
+
+  for (int ii = out.iifrom; ii < out.iito; ii++) {
+    const int i = ilist[ii];
+    if (!(rmass[i] > 0.0)) continue;
+    if (corr)
+      bulk_atom<1>(c, i, firstneigh[i], numneigh[i], out.f[i], out.acc[i]);
+    else
+      bulk_atom<0>(c, i, firstneigh[i], numneigh[i], out.f[i], out.acc[i]);
+  }
+#else
+  (void) bnd;
+  (void) out;
+#endif
+}
