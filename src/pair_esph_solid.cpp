@@ -94,6 +94,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   simd_stride = 0;
   simd_ncalls = -1;
   simd_sep = -1;
+  simd_bnd = 0;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);

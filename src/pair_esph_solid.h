@@ -116,6 +116,7 @@ class PairESPHSolid : public Pair {
   std::vector<int> simd_first, simd_j;
   bigint simd_ncalls;
   int simd_sep;
+  int simd_bnd;    // the boundary-real pairs of one body are the vector pass's too
 
   // per-type material
   ESPH::EOS *eos;

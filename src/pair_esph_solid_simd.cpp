@@ -52,9 +52,12 @@ using namespace ESPHSolid;
 
 // the packed row of an atom (simd_pack()), blocks of 8 doubles that bulk_atom() loads
 // whole: 16 doubles, 24 with the reconstruction or the viscosity switch, 32 with heat
-// transfer. A boundary particle's row holds its position, mass 0 and body only
+// transfer. A boundary particle's row holds its position, mass 0, body and in the slots
+// of the velocity, density, sound speed and first stress its normal, its gap flag (1
+// where it has a gap, add_gap_sums()), gap forecast and gap rate (0 without a gap)
 static constexpr int PK_X = 0, PK_M = 3, PK_V = 4, PK_RHO = 7, PK_C = 8, PK_A = 9, PK_BODY = 15,
                      PK_D = 16, PK_ALPHA = 22, PK_E = 24, PK_ZETA = 25, PK_STRIDE_MAX = 32;
+static constexpr int PK_N = 4, PK_GFLAG = 7, PK_GAP = 8, PK_GAPV = 9;
 
 /* ----------------------------------------------------------------------
    the CPU runs the vector pass (valgrind reports no AVX-512: scalar there)
@@ -83,7 +86,10 @@ struct BulkCtx {
   double alpha, beta, beta_ratio, fconv;
   int recon;    // RECON_OFF, RECON_VANLEER, RECON_MINMOD
   int vswitch, heat;
-  int sep;    // pairs of different bodies are not bulk pairs (contact on)
+  int sep;      // pairs of different bodies are not bulk pairs (contact on)
+  int bnd;      // boundary-real pairs of one body here too (not in the scalar loop)
+  int solid;    // contact solid: the gap sums of those
+  double norm;
 };
 
 #define ESPH_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma")))
@@ -128,6 +134,23 @@ ESPH_AVX512_INLINE void load_cols(const double *pk, int stride, const int *j, in
   c[7] = _mm512_shuffle_f64x2(u3, u7, 0xdd);
 }
 
+/* ----------------------------------------------------------------------
+   the lane sums of a[0..7] added to out[0..7]: 14 shuffles and adds, where
+   eight horizontal sums take about 50
+------------------------------------------------------------------------- */
+
+ESPH_AVX512_INLINE void reduce_add8(const __m512d *a, double *out)
+{
+  const __m512d r01 = _mm512_unpacklo_pd(a[0], a[1]) + _mm512_unpackhi_pd(a[0], a[1]);
+  const __m512d r23 = _mm512_unpacklo_pd(a[2], a[3]) + _mm512_unpackhi_pd(a[2], a[3]);
+  const __m512d r45 = _mm512_unpacklo_pd(a[4], a[5]) + _mm512_unpackhi_pd(a[4], a[5]);
+  const __m512d r67 = _mm512_unpacklo_pd(a[6], a[7]) + _mm512_unpackhi_pd(a[6], a[7]);
+  const __m512d s0 = _mm512_shuffle_f64x2(r01, r23, 0x88) + _mm512_shuffle_f64x2(r01, r23, 0xdd);
+  const __m512d s1 = _mm512_shuffle_f64x2(r45, r67, 0x88) + _mm512_shuffle_f64x2(r45, r67, 0xdd);
+  const __m512d t = _mm512_shuffle_f64x2(s0, s1, 0x88) + _mm512_shuffle_f64x2(s0, s1, 0xdd);
+  _mm512_storeu_pd(out, _mm512_loadu_pd(out) + t);
+}
+
 // recon_slope() of pair_esph_solid_slots.h: x . D x with D in Voigt order
 ESPH_AVX512_INLINE __m512d slope(const __m512d *d, __m512d x0, __m512d x1, __m512d x2)
 {
@@ -169,6 +192,11 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
           sg7 = zero, sg8 = zero;
   __m512d sm0 = zero, sm1 = zero, sm2 = zero, sm3 = zero, sm4 = zero, sm5 = zero, sm6 = zero,
           sm7 = zero, sm8 = zero;
+  // the normal and gap sums from i's own body's boundary particles (add_normal_sums(),
+  // add_gap_sums()): n W, (x_k - x_i).n W, W; W flag, W gap, W gap rate
+  __m512d sb[8];
+  for (int k = 0; k < 8; k++) sb[k] = zero;
+  int nbnd = 0;
 
   alignas(32) int js[8];
   for (int b = 0; b < jnum; b += 8) {
@@ -192,9 +220,33 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     const __m512d q = r * hinv;
     const __mmask8 in = _mm512_mask_cmp_pd_mask(bulk, q, two, _CMP_LT_OQ);
     const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
-    if (!live) continue;
     const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
     const __m512d t = two - q;
+    if (c.bnd) {
+      // boundary particles of i's body within the support
+      __mmask8 bk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_EQ_OQ);
+      bk = _mm512_mask_cmp_pd_mask(bk, c1[7], bi, _CMP_EQ_OQ);
+      bk = _mm512_mask_cmp_pd_mask(bk, q, two, _CMP_LT_OQ);
+      if (bk) {
+        nbnd++;
+        const __m512d w = _mm512_maskz_mov_pd(
+            bk,
+            c.norm *
+                _mm512_mask_blend_pd(near, 0.25 * t * t * t, one - 1.5 * q * q + 0.75 * q * q * q));
+        const __m512d n0 = c0[PK_N], n1 = c0[PK_N + 1], n2 = c0[PK_N + 2];
+        sb[0] += w * n0;
+        sb[1] += w * n1;
+        sb[2] += w * n2;
+        sb[3] += w * (-d0 * n0 - d1 * n1 - d2 * n2);
+        sb[4] += w;
+        if (c.solid) {
+          sb[5] += w * c0[PK_GFLAG];
+          sb[6] += w * c1[PK_GAP - 8];
+          sb[7] += w * c1[PK_GAPV - 8];
+        }
+      }
+    }
+    if (!live) continue;
     const __m512d dwdq = _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
@@ -286,31 +338,118 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     }
   }
 
+  // the sums in the slot order of acc (A_G .. A_AVHEAT, A_HEAT; A_M)
+  const __m512d g8[8] = {sg0, sg1, sg2, sg3, sg4, sg5, sg6, sg7};
+  reduce_add8(g8, ai + A_G);
+  ai[A_G + 8] += _mm512_reduce_add_pd(sg8);
+  ai[A_AVHEAT] += _mm512_reduce_add_pd(savh);
+  if (c.heat) ai[A_HEAT] += _mm512_reduce_add_pd(sheat);
+  if (CORR == 1) {
+    const __m512d m8[8] = {sm0, sm1, sm2, sm3, sm4, sm5, sm6, sm7};
+    reduce_add8(m8, ai + A_M);
+    ai[A_M + 8] += _mm512_reduce_add_pd(sm8);
+  }
   fi[0] += _mm512_reduce_add_pd(sf0);
   fi[1] += _mm512_reduce_add_pd(sf1);
   fi[2] += _mm512_reduce_add_pd(sf2);
-  ai[A_G] += _mm512_reduce_add_pd(sg0);
-  ai[A_G + 1] += _mm512_reduce_add_pd(sg1);
-  ai[A_G + 2] += _mm512_reduce_add_pd(sg2);
-  ai[A_G + 3] += _mm512_reduce_add_pd(sg3);
-  ai[A_G + 4] += _mm512_reduce_add_pd(sg4);
-  ai[A_G + 5] += _mm512_reduce_add_pd(sg5);
-  ai[A_G + 6] += _mm512_reduce_add_pd(sg6);
-  ai[A_G + 7] += _mm512_reduce_add_pd(sg7);
-  ai[A_G + 8] += _mm512_reduce_add_pd(sg8);
-  ai[A_AVHEAT] += _mm512_reduce_add_pd(savh);
-  if (CORR == 1) {
-    ai[A_M] += _mm512_reduce_add_pd(sm0);
-    ai[A_M + 1] += _mm512_reduce_add_pd(sm1);
-    ai[A_M + 2] += _mm512_reduce_add_pd(sm2);
-    ai[A_M + 3] += _mm512_reduce_add_pd(sm3);
-    ai[A_M + 4] += _mm512_reduce_add_pd(sm4);
-    ai[A_M + 5] += _mm512_reduce_add_pd(sm5);
-    ai[A_M + 6] += _mm512_reduce_add_pd(sm6);
-    ai[A_M + 7] += _mm512_reduce_add_pd(sm7);
-    ai[A_M + 8] += _mm512_reduce_add_pd(sm8);
+  if (nbnd) {
+    double b[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    reduce_add8(sb, b);
+    for (int k = 0; k < 5; k++) ai[A_NSUM + k] += b[k];
+    if (c.solid) {
+      ai[A_GW] += b[5];
+      ai[A_GG] += b[6];
+      ai[A_GV] += b[7];
+    }
   }
-  if (c.heat) ai[A_HEAT] += _mm512_reduce_add_pd(sheat);
+}
+
+/* ----------------------------------------------------------------------
+   boundary particle k: its sums over the real particles p of its body
+   within the support (the scalar loop's boundary branch, k's side): with
+   V_p = m_p / rho_p, sum V_p v_p (x) grad_k W, V_p grad_k W, V_p W v_p,
+   V_p W, V_p (x_p - x_k) (x) grad_k W, V_p W (x_p - x_k)
+------------------------------------------------------------------------- */
+
+ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, double *ak)
+{
+  const double *pk_ = c.pk + (size_t) k * c.stride;
+  const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
+  const __m512d xk = bcast(pk_[PK_X]), yk = bcast(pk_[PK_X + 1]), zk = bcast(pk_[PK_X + 2]);
+  const __m512d bk = bcast(pk_[PK_BODY]);
+  const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv);
+  const __m256i nmask = _mm256_set1_epi32(NEIGHMASK);
+  // B_A (9), B_B (3), B_VSUM (3), B_WSUM, B_M (9), B_XSUM (3): slots B_A + 0 .. 27
+  __m512d s[28];
+  for (int a = 0; a < 28; a++) s[a] = zero;
+  alignas(32) int js[8];
+  for (int b = 0; b < jnum; b += 8) {
+    const int n = (jnum - b < 8) ? jnum - b : 8;
+    const __mmask8 m = (__mmask8) ((1u << n) - 1u);
+    _mm256_store_si256((__m256i *) js,
+                       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), nmask));
+    __m512d c0[8], c1[8];
+    load_cols(c.pk, c.stride, js, 0, c0);
+    load_cols(c.pk, c.stride, js, 8, c1);
+    const __m512d mp = c0[PK_M];
+    __mmask8 real = _mm512_mask_cmp_pd_mask(m, mp, zero, _CMP_GT_OQ);
+    real = _mm512_mask_cmp_pd_mask(real, c1[PK_BODY - 8], bk, _CMP_EQ_OQ);
+    if (!real) continue;
+    const __m512d d0 = xk - c0[0], d1 = yk - c0[1], d2 = zk - c0[2];
+    const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
+    const __m512d r = _mm512_sqrt_pd(rsq);
+    const __m512d q = r * hinv;
+    const __mmask8 in = _mm512_mask_cmp_pd_mask(real, q, two, _CMP_LT_OQ);
+    if (!in) continue;
+    const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
+    const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
+    const __m512d t = two - q;
+    const __m512d w = _mm512_maskz_mov_pd(
+        in,
+        c.norm *
+            _mm512_mask_blend_pd(near, 0.25 * t * t * t, one - 1.5 * q * q + 0.75 * q * q * q));
+    const __m512d dwdq = _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
+    const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
+    const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
+    // V_p, 0 in the lanes off the mask
+    const __m512d Vp = _mm512_maskz_div_pd(in, mp, c0[PK_RHO]);
+    const __m512d va0 = Vp * c0[PK_V], va1 = Vp * c0[PK_V + 1], va2 = Vp * c0[PK_V + 2];
+    s[0] += va0 * g0;
+    s[1] += va0 * g1;
+    s[2] += va0 * g2;
+    s[3] += va1 * g0;
+    s[4] += va1 * g1;
+    s[5] += va1 * g2;
+    s[6] += va2 * g0;
+    s[7] += va2 * g1;
+    s[8] += va2 * g2;
+    s[9] += Vp * g0;
+    s[10] += Vp * g1;
+    s[11] += Vp * g2;
+    const __m512d Vw = Vp * w;
+    s[12] += Vw * c0[PK_V];
+    s[13] += Vw * c0[PK_V + 1];
+    s[14] += Vw * c0[PK_V + 2];
+    s[15] += Vw;
+    // x_p - x_k = -dx
+    const __m512d xa0 = -Vp * d0, xa1 = -Vp * d1, xa2 = -Vp * d2;
+    s[16] += xa0 * g0;
+    s[17] += xa0 * g1;
+    s[18] += xa0 * g2;
+    s[19] += xa1 * g0;
+    s[20] += xa1 * g1;
+    s[21] += xa1 * g2;
+    s[22] += xa2 * g0;
+    s[23] += xa2 * g1;
+    s[24] += xa2 * g2;
+    s[25] += xa0 * w;
+    s[26] += xa1 * w;
+    s[27] += xa2 * w;
+  }
+  reduce_add8(s, ak + B_A);
+  reduce_add8(s + 8, ak + B_A + 8);
+  reduce_add8(s + 16, ak + B_A + 16);
+  for (int a = 24; a < 28; a++) ak[B_A + a] += _mm512_reduce_add_pd(s[a]);
 }
 
 }    // namespace
@@ -354,6 +493,7 @@ void PairESPHSolid::simd_pack()
   const int qd = recon_flag ? qcol_d : -1;
   double *const pk = simd_pk;
   double **const q = hq;
+  const double dt = dt_step;
   ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
       double *p = pk + (size_t) i * stride;
@@ -362,7 +502,18 @@ void PairESPHSolid::simd_pack()
       p[PK_X + 1] = x[i][1];
       p[PK_X + 2] = x[i][2];
       p[PK_BODY] = body ? body[i] : 0.0;
-      if (!(rmass[i] > 0.0)) continue;
+      if (!(rmass[i] > 0.0)) {
+        const double *qi = q[i];
+        p[PK_N] = qi[Q_N];
+        p[PK_N + 1] = qi[Q_N + 1];
+        p[PK_N + 2] = qi[Q_N + 2];
+        if (qi[Q_GAP] < GAP_NONE) {
+          p[PK_GFLAG] = 1.0;
+          p[PK_GAP] = qi[Q_GAP] + dt * qi[Q_GAPV];
+          p[PK_GAPV] = qi[Q_GAPV];
+        }
+        continue;
+      }
       const double *qi = q[i];
       p[PK_M] = rmass[i];
       p[PK_V] = qi[Q_V];
@@ -391,11 +542,15 @@ void PairESPHSolid::simd_pack()
 void PairESPHSolid::simd_split(int bnd)
 {
   const int sep = bnd && (contact != CONTACT_OFF);
+  // the boundary-real pairs of one body go to the vector pass too, except with the normal
+  // cones (their sums are the scalar loop's)
+  simd_bnd = bnd && (qcol_n < 0);
   const int inum = list->inum;
-  if (simd_ncalls == neighbor->ncalls && simd_sep == sep && (int) simd_first.size() == inum + 1)
+  if (simd_ncalls == neighbor->ncalls && simd_sep == sep + 2 * simd_bnd &&
+      (int) simd_first.size() == inum + 1)
     return;
   simd_ncalls = neighbor->ncalls;
-  simd_sep = sep;
+  simd_sep = sep + 2 * simd_bnd;
   const double *rmass = state->rmass;
   const int *body = state->body;
   const int *ilist = list->ilist;
@@ -417,7 +572,7 @@ void PairESPHSolid::simd_split(int bnd)
       // pairs the scalar loop skips: two boundary particles of one body (or with another
       // rule than contact solid), a boundary and a real particle of different bodies
       if (bnd && !ireal && !jreal && (contact != CONTACT_SOLID || same)) continue;
-      if (bnd && (ireal != jreal) && !same) continue;
+      if (bnd && (ireal != jreal) && (!same || simd_bnd)) continue;
       simd_j.push_back(jlist[jj]);
     }
   }
@@ -452,11 +607,17 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   c.vswitch = vswitch_flag;
   c.heat = heat_flag;
   c.sep = bnd && (contact != CONTACT_OFF);
+  c.bnd = simd_bnd;
+  c.solid = (contact == CONTACT_SOLID);
+  c.norm = kernel_norm(kernel, dim, h0);
   const int corr = (correct_flag == CORRECT_RATE);
 
   for (int ii = out.iifrom; ii < out.iito; ii++) {
     const int i = ilist[ii];
-    if (!(rmass[i] > 0.0)) continue;
+    if (!(rmass[i] > 0.0)) {
+      if (c.bnd) bnd_atom(c, i, firstneigh[i], numneigh[i], out.acc[i]);
+      continue;
+    }
     if (corr)
       bulk_atom<1>(c, i, firstneigh[i], numneigh[i], out.f[i], out.acc[i]);
     else
