@@ -1259,6 +1259,10 @@ double PairESPHSolid::memory_usage()
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
+  // the vector pass: its packed rows and the scalar loop's split list (the full list is
+  // counted by the neighbor lists)
+  bytes += (double) simd_pk_size * sizeof(double);
+  bytes += (double) (simd_first.capacity() + simd_j.capacity()) * sizeof(int);
   return bytes;
 }
 
