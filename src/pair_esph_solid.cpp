@@ -654,7 +654,7 @@ void PairESPHSolid::init_style()
   atom_contact_flag = 0;
   neighbor->add_request(this);
   // the bulk pairs in vector registers: from a full list (pair_esph_solid_simd.cpp)
-  simd_flag = simd_set && simd_cpu() && simd_physics();
+  simd_flag = simd_set && simd_cpu() && simd_physics() && simd_fits();
   listfull = nullptr;
   simd_ncalls = -1;
   if (simd_flag) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
@@ -680,6 +680,47 @@ void PairESPHSolid::init_list(int id, NeighList *ptr)
    kernel, gradient bonet/lok or torquefree or rigid types every pair goes
    through the scalar loop
 ------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   the full list holds twice the half list's neighbours: with a large h
+   (about 3.7 spacings in 3D for the default neigh_modify one 2000) it
+   would overflow where the half list does not. Estimated from the spacing
+   of fix esph/boundary or else the smallest (m / rho0)^(1/D) of the real
+   particles (a simple cubic lattice, 25 % margin); too many: the scalar
+   loop, with a warning that says how to keep the vector pass
+------------------------------------------------------------------------- */
+
+bool PairESPHSolid::simd_fits()
+{
+  double sp = boundary_spacing();
+  if (!(sp > 0.0)) {
+    double vmin = BIG_DT;
+    const double *rmass = atom->rmass;
+    const int *type = atom->type;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (rmass && rmass[i] > 0.0 && eos[type[i]].rho0 > 0.0)
+        vmin = std::min(vmin, rmass[i] / eos[type[i]].rho0);
+    double vall = vmin;
+    MPI_Allreduce(&vmin, &vall, 1, MPI_DOUBLE, MPI_MIN, world);
+    if (vall >= BIG_DT) return true;
+    sp = pow(vall, 1.0 / dim);
+  }
+  static constexpr double PI = 3.14159265358979323846;
+  const double rc = (cut_global + neighbor->skin) / sp;
+  const double n = (dim == 3) ? 4.0 / 3.0 * PI * rc * rc * rc
+      : (dim == 2)            ? PI * rc * rc
+                              : 2.0 * rc;
+  const bigint need = (bigint) (1.25 * n) + 1;
+  if (need <= neighbor->oneatom) return true;
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid simd yes: a full neighbor list of about {} neighbors per "
+                   "atom (h = {:.3g} spacings) would exceed neigh_modify one {}: every pair goes "
+                   "through the scalar loop; set neigh_modify one {} to keep the vector pass, "
+                   "or simd no to silence this",
+                   need, h0 / sp, neighbor->oneatom, need);
+  return false;
+}
 
 bool PairESPHSolid::simd_physics() const
 {

@@ -215,6 +215,7 @@ class PairESPHSolid : public Pair {
   // the bulk pairs in vector registers (pair_esph_solid_simd.cpp)
   static bool simd_cpu();
   bool simd_physics() const;
+  bool simd_fits();
   bool simd_ready() const;
   void simd_pack();
   void simd_split(int);

@@ -463,7 +463,11 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
 
 bool PairESPHSolid::simd_ready() const
 {
-  if (!simd_flag || !listfull || !list || listfull->inum != list->inum) return false;
+  // (a run with pre no after a pair_style that turned on an option the pass does not
+  // serve has no init_style in between: the scalar loop then takes every pair)
+  if (!simd_flag || !simd_set || !simd_physics() || !listfull || !list ||
+      listfull->inum != list->inum)
+    return false;
   const bigint nall = (bigint) atom->nlocal + atom->nghost;
   return nall * PK_STRIDE_MAX < (bigint) INT_MAX;
 }

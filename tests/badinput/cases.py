@@ -143,6 +143,12 @@ CASES = [
     ("ps_h_four_spacings", [R("pair", "pair_style esph/solid 4e-4")],
      "warning:1 to 2 spacings is usual"),
     ("ps_h_two_spacings_hvar_two", [R("pair", "pair_style esph/solid 2e-4 hvar 2")], "runs"),
+    # the vector pass: a boolean; a full list too large for neigh_modify one: scalar, warned
+    ("ps_simd_missing", [K("pair", " simd")], "error:missing argument"),
+    ("ps_simd_unknown", [K("pair", " simd maybe")], "error:maybe"),
+    ("ps_simd_no", [K("pair", " simd no")], "runs"),
+    ("ps_simd_h_large", [R("pair", "pair_style esph/solid 4e-4")],
+     "warning:would exceed neigh_modify one 2000"),
     ("ps_contact_missing", [K("pair", " contact")], "error:missing argument"),
     ("ps_contact_unknown", [K("pair", " contact maybe")], "error:maybe"),
     ("ps_contact_solid", [K("pair", " contact solid")], "same"),
