@@ -654,8 +654,9 @@ void PairESPHSolid::init_style()
   atom_contact_flag = 0;
   neighbor->add_request(this);
   // the bulk pairs in vector registers: from a full list (pair_esph_solid_simd.cpp)
+  // (listfull stays: LAMMPS calls init_list() only when it makes new lists, and a run with
+  // the same requests keeps the last run's)
   simd_flag = simd_set && simd_cpu() && simd_physics() && simd_fits();
-  listfull = nullptr;
   simd_ncalls = -1;
   if (simd_flag) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
 }
@@ -1314,5 +1315,7 @@ void *PairESPHSolid::extract(const char *str, int &dim_out)
   dim_out = 0;
   if (strcmp(str, "h") == 0) return (void *) &h0;
   if (strcmp(str, "cut") == 0) return (void *) &cut_global;
+  // (an int: the last force computation used the vector pass; for tests and diagnostics)
+  if (strcmp(str, "simd_active") == 0) return (void *) &simd_active;
   return nullptr;
 }

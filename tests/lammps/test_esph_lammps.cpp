@@ -3,10 +3,12 @@
 
 #include "atom.h"
 #include "fix.h"
+#include "force.h"
 #include "info.h"
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
+#include "pair.h"
 #include "update.h"
 
 #include "../testing/core.h"
@@ -584,6 +586,39 @@ static void restart_check(LAMMPS *lmp, const std::string &pstyle, const std::str
   // with plasticity the impact (1.2 GPa) is far above the yield stress
   if (!pcoeff.empty()) EXPECT_GT(epmax, 1.0e-4);
   remove("test_esph.restart");
+}
+
+// simd yes: the vector pass stays in use from one run to the next (LAMMPS keeps the neighbor
+// lists of a run with the same requests and does not hand them over again), and simd no does
+// not use it; on a CPU without AVX-512 it is never used
+TEST_F(ESPHTest, SimdInEveryRun)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512dq");
+#else
+  const bool avx512 = false;
+#endif
+  auto active = [this]() {
+    int dim = -1;
+    const int *p = (const int *) lmp->force->pair->extract("simd_active", dim);
+    return p ? *p : -1;
+  };
+  int first, second, off;
+  BEGIN_HIDE_OUTPUT();
+  for (const auto &line : utils::split_lines(setup_impact(50.0))) command(line);
+  command("run 10 post no");
+  first = active();
+  command("run 10 post no");
+  second = active();
+  command("pair_style esph/solid 1e-4 simd no");
+  command("pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69");
+  command("run 10 post no");
+  off = active();
+  END_HIDE_OUTPUT();
+  EXPECT_EQ(first, avx512 ? 1 : 0);
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(off, 0);
 }
 
 TEST_F(ESPHTest, RestartInMidContactIsExact)
