@@ -159,6 +159,36 @@ ESPH_AVX512_INLINE __m512d slope(const __m512d *d, __m512d x0, __m512d x1, __m51
 }
 
 /* ----------------------------------------------------------------------
+   the neighbours jlist[b .. b + 8) of a particle: their indices in js and
+   the first two blocks of their packed rows in c0, c1; the lanes past
+   jnum read atom 0's row and are off the returned mask
+------------------------------------------------------------------------- */
+
+ESPH_AVX512_INLINE __mmask8 load_chunk(const BulkCtx &c, const int *jlist, int jnum, int b, int *js,
+                                       __m512d *c0, __m512d *c1)
+{
+  const int n = (jnum - b < 8) ? jnum - b : 8;
+  const __mmask8 m = (__mmask8) ((1u << n) - 1u);
+  _mm256_store_si256(
+      (__m256i *) js,
+      _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), _mm256_set1_epi32(NEIGHMASK)));
+  load_cols(c.pk, c.stride, js, 0, c0);
+  load_cols(c.pk, c.stride, js, 8, c1);
+  return m;
+}
+
+// the cubic B-spline (kernel_eval()) at q < 2, t = 2 - q, near = q < 1: W / norm and dW/dq
+ESPH_AVX512_INLINE __m512d cubic_w(__mmask8 near, __m512d q, __m512d t)
+{
+  return _mm512_mask_blend_pd(near, 0.25 * t * t * t, 1.0 - 1.5 * q * q + 0.75 * q * q * q);
+}
+
+ESPH_AVX512_INLINE __m512d cubic_dwdq(__mmask8 near, __m512d q, __m512d t)
+{
+  return _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
+}
+
+/* ----------------------------------------------------------------------
    the bulk pairs of particle i among its full list's jnum neighbours
    jlist, eight at a time: the scalar loop's same-body branch (stress
    force, Monaghan-Gingold viscosity with its reconstruction or switch, G,
@@ -178,7 +208,6 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
   const __m512d vi0 = bcast(pi_[PK_V]), vi1 = bcast(pi_[PK_V + 1]), vi2 = bcast(pi_[PK_V + 2]);
   const __m512d rhoi = bcast(pi_[PK_RHO]), ci = bcast(pi_[PK_C]), mi = bcast(pi_[PK_M]);
   const __m512d bi = bcast(pi_[PK_BODY]);
-  const __m256i nmask = _mm256_set1_epi32(NEIGHMASK);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv), h0 = bcast(c.h0);
   const __m512d epsh2 = bcast(c.epsh2);
   __m512d Ai[6], Di[6];
@@ -200,14 +229,8 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
 
   alignas(32) int js[8];
   for (int b = 0; b < jnum; b += 8) {
-    const int n = (jnum - b < 8) ? jnum - b : 8;
-    const __mmask8 m = (__mmask8) ((1u << n) - 1u);
-    // the lanes past the list's end read atom 0's row and are masked off
-    _mm256_store_si256((__m256i *) js,
-                       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), nmask));
     __m512d c0[8], c1[8];
-    load_cols(c.pk, c.stride, js, 0, c0);
-    load_cols(c.pk, c.stride, js, 8, c1);
+    const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
     const __m512d d0 = xi - c0[0], d1 = yi - c0[1], d2 = zi - c0[2];
     const __m512d mj = c0[3];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
@@ -229,10 +252,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
       bk = _mm512_mask_cmp_pd_mask(bk, q, two, _CMP_LT_OQ);
       if (bk) {
         nbnd++;
-        const __m512d w = _mm512_maskz_mov_pd(
-            bk,
-            c.norm *
-                _mm512_mask_blend_pd(near, 0.25 * t * t * t, one - 1.5 * q * q + 0.75 * q * q * q));
+        const __m512d w = _mm512_maskz_mov_pd(bk, c.norm * cubic_w(near, q, t));
         const __m512d n0 = c0[PK_N], n1 = c0[PK_N + 1], n2 = c0[PK_N + 2];
         sb[0] += w * n0;
         sb[1] += w * n1;
@@ -247,7 +267,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
       }
     }
     if (!live) continue;
-    const __m512d dwdq = _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
+    const __m512d dwdq = cubic_dwdq(near, q, t);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
     const __m512d v0 = vi0 - c0[4], v1 = vi1 - c0[5], v2 = vi2 - c0[6];
@@ -378,19 +398,13 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
   const __m512d xk = bcast(pk_[PK_X]), yk = bcast(pk_[PK_X + 1]), zk = bcast(pk_[PK_X + 2]);
   const __m512d bk = bcast(pk_[PK_BODY]);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv);
-  const __m256i nmask = _mm256_set1_epi32(NEIGHMASK);
   // B_A (9), B_B (3), B_VSUM (3), B_WSUM, B_M (9), B_XSUM (3): slots B_A + 0 .. 27
   __m512d s[28];
   for (int a = 0; a < 28; a++) s[a] = zero;
   alignas(32) int js[8];
   for (int b = 0; b < jnum; b += 8) {
-    const int n = (jnum - b < 8) ? jnum - b : 8;
-    const __mmask8 m = (__mmask8) ((1u << n) - 1u);
-    _mm256_store_si256((__m256i *) js,
-                       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), nmask));
     __m512d c0[8], c1[8];
-    load_cols(c.pk, c.stride, js, 0, c0);
-    load_cols(c.pk, c.stride, js, 8, c1);
+    const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
     const __m512d mp = c0[PK_M];
     __mmask8 real = _mm512_mask_cmp_pd_mask(m, mp, zero, _CMP_GT_OQ);
     real = _mm512_mask_cmp_pd_mask(real, c1[PK_BODY - 8], bk, _CMP_EQ_OQ);
@@ -404,11 +418,8 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
     const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
     const __m512d t = two - q;
-    const __m512d w = _mm512_maskz_mov_pd(
-        in,
-        c.norm *
-            _mm512_mask_blend_pd(near, 0.25 * t * t * t, one - 1.5 * q * q + 0.75 * q * q * q));
-    const __m512d dwdq = _mm512_mask_blend_pd(near, -0.75 * t * t, -3.0 * q + 2.25 * q * q);
+    const __m512d w = _mm512_maskz_mov_pd(in, c.norm * cubic_w(near, q, t));
+    const __m512d dwdq = cubic_dwdq(near, q, t);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
     // V_p, 0 in the lanes off the mask
