@@ -15,15 +15,18 @@
    pair esph/solid: the bulk pairs in vector registers (keyword simd)
 
    A bulk pair is one of two real particles of the same body (of any two
-   bodies with contact off): the pair that most neighbours are and that
-   needs none of the contact or boundary logic. With simd yes, on a CPU
-   with AVX-512, the scalar loop (pair_esph_solid_loop.cpp) skips them in
-   the half list and this pass takes them from a full neighbour list:
-   eight neighbours of one particle per vector, with only the particle's
-   own sums written (no writes to j, so no scatter and no conflicts; every
-   pair is computed from both sides, each side with the scalar loop's
-   formulas). The answer is the scalar loop's to round-off: the sums are
-   in another order and the compiler may fuse multiply-adds.
+   bodies with contact off), or of a boundary and a real particle of one
+   body (without contact/normal cone): the pairs that most neighbours are
+   and that need none of the contact logic. With simd yes, on a CPU with
+   AVX-512, the scalar loop (pair_esph_solid_loop.cpp) takes only the
+   other pairs, from the half list split by simd_split(), and this pass
+   takes the bulk pairs from a full neighbour list: eight neighbours of
+   one particle per vector, read from packed per-atom rows (simd_pack())
+   by row loads and a transpose, with only the particle's own sums
+   written (no writes to j, so no scatter and no conflicts; every pair is
+   computed from both sides, each side with the scalar loop's formulas).
+   The answer is the scalar loop's to round-off: the sums are in another
+   order and the compiler may fuse multiply-adds.
 ------------------------------------------------------------------------- */
 
 #include "pair_esph_solid.h"
