@@ -36,6 +36,7 @@
 #include "force.h"
 #include "info.h"
 #include "input.h"
+#include "math_const.h"
 #include "math_special.h"
 #include "memory.h"
 #include "modify.h"
@@ -674,15 +675,6 @@ void PairESPHSolid::init_list(int id, NeighList *ptr)
 }
 
 /* ----------------------------------------------------------------------
-   the vector pass implements the bulk pairs of the default physics and
-   its usual options: constant h, the cubic B-spline, gradient plain or
-   corrected, the viscosity with its reconstruction or switch, heat
-   transfer. With the artificial stress, XSPH, a variable h, another
-   kernel, gradient bonet/lok or torquefree or rigid types every pair goes
-   through the scalar loop
-------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
    the full list holds twice the half list's neighbours: with a large h
    (about 3.7 spacings in 3D for the default neigh_modify one 2000) it
    would overflow where the half list does not. Estimated from the spacing
@@ -699,17 +691,16 @@ bool PairESPHSolid::simd_fits()
     const double *rmass = atom->rmass;
     const int *type = atom->type;
     for (int i = 0; i < atom->nlocal; i++)
-      if (rmass && rmass[i] > 0.0 && eos[type[i]].rho0 > 0.0)
+      if (rmass[i] > 0.0 && eos[type[i]].rho0 > 0.0)
         vmin = std::min(vmin, rmass[i] / eos[type[i]].rho0);
     double vall = vmin;
     MPI_Allreduce(&vmin, &vall, 1, MPI_DOUBLE, MPI_MIN, world);
     if (vall >= BIG_DT) return true;
     sp = pow(vall, 1.0 / dim);
   }
-  static constexpr double PI = 3.14159265358979323846;
   const double rc = (cut_global + neighbor->skin) / sp;
-  const double n = (dim == 3) ? 4.0 / 3.0 * PI * rc * rc * rc
-      : (dim == 2)            ? PI * rc * rc
+  const double n = (dim == 3) ? MathConst::MY_4PI3 * rc * rc * rc
+      : (dim == 2)            ? MathConst::MY_PI * rc * rc
                               : 2.0 * rc;
   const bigint need = (bigint) (1.25 * n) + 1;
   if (need <= neighbor->oneatom) return true;
@@ -722,6 +713,15 @@ bool PairESPHSolid::simd_fits()
                    need, h0 / sp, neighbor->oneatom, need);
   return false;
 }
+
+/* ----------------------------------------------------------------------
+   the vector pass implements the bulk pairs of the default physics and
+   its usual options: constant h, the cubic B-spline, gradient plain or
+   corrected, the viscosity with its reconstruction or switch, heat
+   transfer. With the artificial stress, XSPH, a variable h, another
+   kernel, gradient bonet/lok or torquefree or rigid types every pair goes
+   through the scalar loop
+------------------------------------------------------------------------- */
 
 bool PairESPHSolid::simd_physics() const
 {

@@ -41,7 +41,6 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 
-#include <climits>
 #include <vector>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__INTEL_COMPILER)
@@ -234,14 +233,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
   for (int b = 0; b < jnum; b += 8) {
     __m512d c0[8], c1[8];
     const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
-    const __m512d d0 = xi - c0[0], d1 = yi - c0[1], d2 = zi - c0[2];
-    const __m512d mj = c0[3];
+    const __m512d d0 = xi - c0[PK_X], d1 = yi - c0[PK_X + 1], d2 = zi - c0[PK_X + 2];
+    const __m512d mj = c0[PK_M], bj = c1[PK_BODY - 8];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
     // bulk partners: real, of the same body (with contact on), within the support and not
     // coinciding (there the gradient vanishes); the cubic B-spline's dW/dr / r
     // (kernel_eval), 0 in every other lane
     __mmask8 bulk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_GT_OQ);
-    if (c.sep) bulk = _mm512_mask_cmp_pd_mask(bulk, c1[7], bi, _CMP_EQ_OQ);
+    if (c.sep) bulk = _mm512_mask_cmp_pd_mask(bulk, bj, bi, _CMP_EQ_OQ);
     const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d q = r * hinv;
     const __mmask8 in = _mm512_mask_cmp_pd_mask(bulk, q, two, _CMP_LT_OQ);
@@ -251,7 +250,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     if (c.bnd) {
       // boundary particles of i's body within the support
       __mmask8 bk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_EQ_OQ);
-      bk = _mm512_mask_cmp_pd_mask(bk, c1[7], bi, _CMP_EQ_OQ);
+      bk = _mm512_mask_cmp_pd_mask(bk, bj, bi, _CMP_EQ_OQ);
       bk = _mm512_mask_cmp_pd_mask(bk, q, two, _CMP_LT_OQ);
       if (bk) {
         nbnd++;
@@ -273,13 +272,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     const __m512d dwdq = cubic_dwdq(near, q, t);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
-    const __m512d v0 = vi0 - c0[4], v1 = vi1 - c0[5], v2 = vi2 - c0[6];
-    const __m512d rhoj = c0[7], cj = c1[0];
+    const __m512d v0 = vi0 - c0[PK_V], v1 = vi1 - c0[PK_V + 1], v2 = vi2 - c0[PK_V + 2];
+    const __m512d rhoj = c0[PK_RHO], cj = c1[PK_C - 8];
+    const __m512d *Aj = c1 + (PK_A - 8);
 
     // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W
-    const __m512d T0 = Ai[0] + c1[1], T1 = Ai[1] + c1[2], T2 = Ai[2] + c1[3];
-    const __m512d T3 = Ai[3] + c1[4], T4 = Ai[4] + c1[5], T5 = Ai[5] + c1[6];
-    // (rows of boundary particles hold zeros here: every product below stays finite)
+    const __m512d T0 = Ai[0] + Aj[0], T1 = Ai[1] + Aj[1], T2 = Ai[2] + Aj[2];
+    const __m512d T3 = Ai[3] + Aj[3], T4 = Ai[4] + Aj[4], T5 = Ai[5] + Aj[5];
+    // (in the lanes of boundary particles these slots hold gap values: finite, times g = 0)
     const __m512d Tg0 = T0 * g0 + T3 * g1 + T4 * g2;
     const __m512d Tg1 = T3 * g0 + T1 * g1 + T5 * g2;
     const __m512d Tg2 = T4 * g0 + T5 * g1 + T2 * g2;
@@ -288,14 +288,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     const __m512d vr = v0 * d0 + v1 * d1 + v2 * d2;
     const __mmask8 appr = _mm512_mask_cmp_pd_mask(live, vr, zero, _CMP_LT_OQ);
     __m512d c2[8], c3[8];
-    if (appr && (c.recon || c.vswitch)) load_cols(c.pk, c.stride, js, 16, c2);
-    if (c.heat) load_cols(c.pk, c.stride, js, 24, c3);
+    if (appr && (c.recon || c.vswitch)) load_cols(c.pk, c.stride, js, PK_D, c2);
+    if (c.heat) load_cols(c.pk, c.stride, js, PK_E, c3);
     __m512d pi = zero;
     if (appr) {
       __m512d vrv = vr;
       if (c.recon) {
         // the velocities reconstructed to the pair's midpoint, limited (recon_vr())
-        const __m512d a_i = slope(Di, d0, d1, d2), a_j = slope(c2, d0, d1, d2);
+        const __m512d a_i = slope(Di, d0, d1, d2), a_j = slope(c2 + (PK_D - 16), d0, d1, d2);
         const __m512d p = a_i * a_j;
         const __mmask8 pos = _mm512_mask_cmp_pd_mask(appr, p, zero, _CMP_GT_OQ);
         if (pos) {
@@ -314,7 +314,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
       const __m512d mu = h0 * vrv / (rsq + epsh2);
       __m512d al = bcast(c.alpha), be = bcast(c.beta);
       if (c.vswitch) {
-        al = 0.5 * (alphai + c2[6]);
+        al = 0.5 * (alphai + c2[PK_ALPHA - 16]);
         be = c.beta_ratio * al;
       }
       pi =
@@ -353,10 +353,10 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     }
     if (c.heat) {
       // artificial heat transfer (eqs. 8-10)
-      const __m512d zbar = 0.5 * (zetai + c3[1]);
+      const __m512d zbar = 0.5 * (zetai + c3[PK_ZETA - 24]);
       const __m512d rbar = 0.5 * (rhoi + rhoj);
-      const __m512d heat =
-          _mm512_maskz_div_pd(live, 2.0 * zbar / rbar * (ei - c3[0]) * dw * rsq, rsq + epsh2);
+      const __m512d heat = _mm512_maskz_div_pd(
+          live, 2.0 * zbar / rbar * (ei - c3[PK_E - 24]) * dw * rsq, rsq + epsh2);
       sheat += mj * heat;
     }
   }
@@ -412,7 +412,7 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     __mmask8 real = _mm512_mask_cmp_pd_mask(m, mp, zero, _CMP_GT_OQ);
     real = _mm512_mask_cmp_pd_mask(real, c1[PK_BODY - 8], bk, _CMP_EQ_OQ);
     if (!real) continue;
-    const __m512d d0 = xk - c0[0], d1 = yk - c0[1], d2 = zk - c0[2];
+    const __m512d d0 = xk - c0[PK_X], d1 = yk - c0[PK_X + 1], d2 = zk - c0[PK_X + 2];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
     const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d q = r * hinv;
@@ -471,19 +471,17 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
 #endif
 
 /* ----------------------------------------------------------------------
-   the vector pass is usable in this force computation: the full list next
-   to the half one, and row indices that fit its 32-bit index arithmetic
+   the vector pass is usable in this force computation: set up for this
+   run, the options still the ones it serves, the full list next to the
+   half one
 ------------------------------------------------------------------------- */
 
 bool PairESPHSolid::simd_ready() const
 {
   // (a run with pre no after a pair_style that turned on an option the pass does not
   // serve has no init_style in between: the scalar loop then takes every pair)
-  if (!simd_flag || !simd_set || !simd_physics() || !listfull || !list ||
-      listfull->inum != list->inum)
-    return false;
-  const bigint nall = (bigint) atom->nlocal + atom->nghost;
-  return nall * PK_STRIDE_MAX < (bigint) INT_MAX;
+  return simd_flag && simd_set && simd_physics() && listfull && list &&
+      listfull->inum == list->inum;
 }
 
 /* ----------------------------------------------------------------------
