@@ -63,8 +63,8 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0), nboundary(0),
-    atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
+    acc_cols(A_NN), hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0),
+    nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
     fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
@@ -90,9 +90,6 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   nforward = nreverse = 0;
   simd_flag = simd_active = 0;
   listfull = nullptr;
-  simd_pk = nullptr;
-  simd_pk_size = 0;
-  simd_stride = 0;
   simd_ncalls = -1;
   simd_sep = -1;
   simd_bnd = 0;
@@ -143,7 +140,6 @@ PairESPHSolid::~PairESPHSolid()
 {
   if (copymode) return;
   delete state;
-  memory->destroy(simd_pk);
   memory->destroy(acc);
   memory->destroy(hq);
   memory->destroy(drho);
@@ -903,17 +899,24 @@ void PairESPHSolid::setup()
 void PairESPHSolid::grow_work()
 {
   // the artificial stress keeps R next to the other hoisted quantities (memory locality)
-  const int cols0 = NHQ + (astress_flag ? NHQ_AST : 0) + (vswitch_flag ? 1 : 0);
+  const int cols0 = NHQ + (astress_flag ? NHQ_AST : 0);
   qcol_b = (correct_flag >= CORRECT_BONETLOK) ? cols0 : -1;
   const int cols1 = cols0 + (qcol_b >= 0 ? 9 : 0);
-  qcol_d = recon_flag ? cols1 : -1;
-  const int cols2 = cols1 + (qcol_d >= 0 ? 6 : 0);
-  qcol_n = (cone_flag && contact == CONTACT_SOLID) ? cols2 : -1;
-  const int cols = cols2 + (qcol_n >= 0 ? 6 : 0);
+  qcol_d = recon_flag ? Q_D : -1;
+  qcol_n = (cone_flag && contact == CONTACT_SOLID) ? cols1 : -1;
+  const int cols = cols1 + (qcol_n >= 0 ? 6 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);
     hq_cols = cols;
     if (nmax > 0) memory->create(hq, nmax, hq_cols, "pair:hq");
+    if (nmax > 0) memset(hq[0], 0, sizeof(double) * nmax * hq_cols);
+  }
+  // the cone sums only with the normal cones
+  const int acols = (qcol_n >= 0) ? NACC : A_NN;
+  if (acols != acc_cols) {
+    memory->destroy(acc);
+    acc_cols = acols;
+    if (nmax > 0) memory->create(acc, nmax, acc_cols, "pair:acc");
   }
   // set by every force computation before the integrator reads it: no initial values
   if (xsph_flag && !xsph && nmax > 0) memory->create(xsph, nmax, 3, "pair:xsph");
@@ -924,8 +927,10 @@ void PairESPHSolid::grow_work()
   if (atom->nmax <= nmax) return;
   const int old = nmax;
   nmax = atom->nmax;
-  memory->grow(acc, nmax, NACC, "pair:acc");
+  memory->grow(acc, nmax, acc_cols, "pair:acc");
   memory->grow(hq, nmax, hq_cols, "pair:hq");
+  // (rows the vector pass may read in slots this run does not set: finite)
+  memset(hq[old], 0, sizeof(double) * (nmax - old) * hq_cols);
   memory->grow(drho, nmax, "pair:drho");
   memory->grow(de, nmax, "pair:de");
   memory->grow(dh, nmax, "pair:dh");
@@ -1151,10 +1156,10 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
     }
     return m;
   }
-  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
-    for (int k = 0; k < 12; k++) buf[m++] = q[k];
+    for (int k = Q_V; k < Q_A + 6; k++) buf[m++] = q[k];
+    buf[m++] = q[Q_H];
     if (comm_bnd) {
       for (int k = Q_N; k <= Q_GAP; k++) buf[m++] = q[k];
       buf[m++] = q[Q_GAPV];
@@ -1166,7 +1171,7 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       buf[m++] = q[Q_E];
       buf[m++] = q[Q_ZETA];
     }
-    if (vswitch_flag) buf[m++] = q[qal];
+    if (vswitch_flag) buf[m++] = q[Q_ALPHA];
     if (recon_flag)
       for (int k = 0; k < 6; k++) buf[m++] = q[qcol_d + k];
   }
@@ -1202,10 +1207,10 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
     }
     return;
   }
-  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   for (int i = first; i < last; i++) {
     double *q = hq[i];
-    for (int k = 0; k < 12; k++) q[k] = buf[m++];
+    for (int k = Q_V; k < Q_A + 6; k++) q[k] = buf[m++];
+    q[Q_H] = buf[m++];
     if (comm_bnd) {
       for (int k = Q_N; k <= Q_GAP; k++) q[k] = buf[m++];
       q[Q_GAPV] = buf[m++];
@@ -1217,7 +1222,7 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       q[Q_E] = buf[m++];
       q[Q_ZETA] = buf[m++];
     }
-    if (vswitch_flag) q[qal] = buf[m++];
+    if (vswitch_flag) q[Q_ALPHA] = buf[m++];
     if (recon_flag)
       for (int k = 0; k < 6; k++) q[qcol_d + k] = buf[m++];
   }
@@ -1297,13 +1302,12 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
 double PairESPHSolid::memory_usage()
 {
   double bytes = Pair::memory_usage();
-  bytes += (double) nmax * (NACC + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
+  bytes += (double) nmax * (acc_cols + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
-  // the vector pass: its packed rows and the scalar loop's split list (the full list is
-  // counted by the neighbor lists)
-  bytes += (double) simd_pk_size * sizeof(double);
+  // the vector pass: the scalar loop's split list (the full list is counted by the
+  // neighbor lists; its rows are hq's)
   bytes += (double) (simd_first.capacity() + simd_j.capacity()) * sizeof(int);
   return bytes;
 }

@@ -57,8 +57,8 @@ class PairESPHSolid : public Pair {
 
   // accumulator slots (real particles | boundary particles), see compute()
   static constexpr int NACC = 38;
-  // hoisted per-particle quantities sent to ghosts every step
-  static constexpr int NHQ = 20;
+  // hoisted per-particle quantities (slots Q_* of pair_esph_solid_slots.h)
+  static constexpr int NHQ = 32;
   // more hoisted quantities per atom with the artificial stress (R and its flag)
   static constexpr int NHQ_AST = 7;
 
@@ -108,9 +108,6 @@ class PairESPHSolid : public Pair {
                          // and the physics allow it); it has a full list next to the half one
   int simd_active;       // this force computation uses it (simd_ready())
   class NeighList *listfull;    // full neighbour list of the vector pass, or nullptr
-  double *simd_pk;              // its packed per-atom rows (simd_pack())
-  bigint simd_pk_size;
-  int simd_stride;
   // the half list's other pairs, for the scalar loop: those of entry ii at
   // simd_j[simd_first[ii] .. simd_first[ii + 1]) (simd_split(), at each new list)
   std::vector<int> simd_first, simd_j;
@@ -132,18 +129,18 @@ class PairESPHSolid : public Pair {
 
   // per-atom work arrays
   int nmax;
-  double **acc;                    // accumulated sums, NACC per atom (reverse communicated)
-  double **hq;                     // hoisted quantities, NHQ per atom (forward communicated)
+  double **acc;                    // accumulated sums, acc_cols per atom (reverse communicated)
+  double **hq;                     // hoisted quantities, hq_cols per atom (forward communicated)
+  int acc_cols;                    // columns of acc: A_NN, NACC with the normal cones
   double *drho, *de, *dh, **ds;    // rates for the integrator
   double *dalpha;                  // rate of d_esph_alpha, only with visc/switch
   double **bvel, **bspin;          // boundary particles: interpolated velocity, spin W (xy xz yz)
   double **xsph;                   // XSPH velocity correction eps sum_j ..., only with xsph
-  int hq_cols;       // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 1 with the
-                     // viscosity switch (its alpha_i), + 9 with the gradient correction (B_i),
-                     // + 6 with visc/recon (D_i)
+  int hq_cols;       // columns of hq: NHQ, + NHQ_AST with the artificial stress, + 9 with
+                     // the gradient correction bonet/lok (B_i), + 6 with the normal cones
   int qcol_b;        // first column of B_i = (sigma_i / rho_i) M_i^-T (row major), or -1
   int qcol_n;        // contact/normal cone: first column of the cone C_i (Voigt), or -1
-  int qcol_d;        // visc/recon: first column of the strain rate D_i (Voigt) it uses, or -1
+  int qcol_d;        // visc/recon: Q_D, the strain rate D_i (Voigt) it uses, or -1
   int cone_keep;     // contact/normal cone: the same for the cones
   int recon_keep;    // visc/recon: the next computation re-evaluates the last one: keep
                      // the strain rates that one used

@@ -144,7 +144,8 @@ void PairESPHSolid::compute_normals()
   comm->forward_comm(this, 7);
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
-    for (int k = A_NN; k < A_NN + 6; k++) acc[i][k] = 0.0;
+    if (qcol_n >= 0)
+      for (int k = A_NN; k < A_NN + 6; k++) acc[i][k] = 0.0;
     for (int k = A_GW; k < GAP_END; k++) acc[i][k] = 0.0;
   }
 

@@ -112,8 +112,11 @@ void PairESPHSolid::correction()
             Bm = 0.5 * (AM + AM.transpose()) * Minv.transpose();
           }
         }
-      } else {
+      } else if (rmass[i] > 0.0) {
         Bm = A;
+      } else {
+        // a boundary particle: no stress (its Q_A slots hold its normal and gap)
+        Bm.setZero();
       }
       for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++) B[3 * r + c] = Bm(r, c);

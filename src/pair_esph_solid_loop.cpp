@@ -78,7 +78,6 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   // the switched (visc/switch) or reconstructed (visc/recon) viscosity, either or both
   constexpr int VEXT = EXTRA & EXTRA_VISC;
   const int vswitch = VEXT && vswitch_flag;
-  constexpr int QAL = AST ? Q_ALPHA_AST : Q_ALPHA;
   // switched viscosity: beta_ij keeps the ratio beta / alpha of the visc keyword
   const double beta_ratio = (vswitch && alpha > 0.0) ? beta / alpha : 0.0;
   // visc/recon: the limiter, and the column of the strain rates it reconstructs with
@@ -292,7 +291,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           double al = alpha, be = beta;
           if (vswitch) {
             // Morris-Monaghan switch: the mean of the two particles' alpha
-            al = 0.5 * (qa[QAL] + qb[QAL]);
+            al = 0.5 * (qa[Q_ALPHA] + qb[Q_ALPHA]);
             be = beta_ratio * al;
           }
           pi_ij = (-al * 0.5 * (qa[Q_C] + qb[Q_C]) * mu + be * mu * mu) /

@@ -70,14 +70,15 @@ void PairESPHSolid::hoist()
   const double hlimit = cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12);
   // internal units from here on: sigma/rho^2, e and c (esph_units.h)
   const double ein = units.energy_in, pin = units.pressure_in;
-  // the switched viscosity coefficient: its column, and the predicted or current alpha_i
-  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
+  // the switched viscosity coefficient: the predicted or current alpha_i
   const double *alpha_now = vswitch_flag ? state->alpha : nullptr;
   // visc/recon: the strain rates of the last computation become the ones this one uses,
   // unless it re-evaluates the last computation (a continued run)
   double **drec = recon_flag ? state->drec : nullptr;
   double **drecu = recon_flag ? state->drecu : nullptr;
   const int recon_shift = drec && !recon_keep;
+  // the gap forecast of the boundary particles (add_gap_sums())
+  const double dt = dt_step;
 
   recon_keep = 0;
 
@@ -130,7 +131,7 @@ void PairESPHSolid::hoist()
         q[Q_A + 4] = sp[4] * pin * inv;
         q[Q_A + 5] = sp[5] * pin * inv;
         q[Q_E] = e;
-        if (alpha_now) q[qal] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
+        if (alpha_now) q[Q_ALPHA] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
         // CFL with the longitudinal wave speed
         const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
         const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
@@ -148,8 +149,16 @@ void PairESPHSolid::hoist()
       } else {
         q[Q_RHO] = q[Q_C] = q[Q_E] = q[Q_ZETA] = 0.0;
         q[Q_H] = state->h[i];
-        for (int k = 0; k < 6; k++) q[Q_A + k] = 0.0;
-        if (alpha_now) q[qal] = 0.0;
+        // (no stress: the normal and gap terms of the vector pass, Q_BN .. Q_BGAPV)
+        const double *n = state->n[i];
+        const int hasgap = state->gap[i] < GAP_NONE;
+        q[Q_BN] = n[0];
+        q[Q_BN + 1] = n[1];
+        q[Q_BN + 2] = n[2];
+        q[Q_BGFLAG] = hasgap ? 1.0 : 0.0;
+        q[Q_BGAP] = hasgap ? state->gap[i] + dt * state->gapv[i] : 0.0;
+        q[Q_BGAPV] = hasgap ? state->gapv[i] : 0.0;
+        if (alpha_now) q[Q_ALPHA] = 0.0;
       }
     }
     dtmin_t[tid] = dtl;
@@ -193,10 +202,13 @@ void PairESPHSolid::hoist()
 void PairESPHSolid::artificial_stress()
 {
   const int nall = atom->nlocal + atom->nghost;
+  const double *rmass = state->rmass;
   for (int i = 0; i < nall; i++) {
     const double *A = hq[i] + Q_A;
     double *R = hq[i] + Q_R;
     for (int k = 0; k < NHQ_AST; k++) R[k] = 0.0;
+    // (a boundary particle has no stress, its Q_A slots hold its normal and gap)
+    if (!(rmass[i] > 0.0)) continue;
     // compression in every direction (the common case in impact): nothing to do;
     // the largest eigenvalue is at most the largest Gershgorin bound
     const double g0 = A[0] + fabs(A[3]) + fabs(A[4]);
@@ -227,7 +239,6 @@ void PairESPHSolid::finalize(int eflag)
   const double *rmass = state->rmass;
   double **v = atom->v;
   const int bnd = (nboundary > 0);
-  const int qal = astress_flag ? Q_ALPHA_AST : Q_ALPHA;
   const int qcn = qcol_n;
 
   std::vector<double> esum(nthreads, 0.0);
@@ -289,7 +300,7 @@ void PairESPHSolid::finalize(int eflag)
         // viscosity switch (Morris and Monaghan 1997): decay to alpha_min over
         // tau = h / (l c), rise towards alpha under compression, div v = -drho / rho
         if (vswitch_flag) {
-          const double al = q[qal];
+          const double al = q[Q_ALPHA];
           const double compress = MAX(drho[i] / rho, 0.0);
           dalpha[i] = -(al - vswitch_min) * vswitch_l * q[Q_C] / q[Q_H] + compress * (alpha - al);
         }

@@ -52,14 +52,11 @@ using namespace LAMMPS_NS;
 using namespace ESPH;
 using namespace ESPHSolid;
 
-// the packed row of an atom (simd_pack()), blocks of 8 doubles that bulk_atom() loads
-// whole: 16 doubles, 24 with the reconstruction or the viscosity switch, 32 with heat
-// transfer. A boundary particle's row holds its position, mass 0, body and in the slots
-// of the velocity, density, sound speed and first stress its normal, its gap flag (1
-// where it has a gap, add_gap_sums()), gap forecast and gap rate (0 without a gap)
-static constexpr int PK_X = 0, PK_M = 3, PK_V = 4, PK_RHO = 7, PK_C = 8, PK_A = 9, PK_BODY = 15,
-                     PK_D = 16, PK_ALPHA = 22, PK_E = 24, PK_ZETA = 25, PK_STRIDE_MAX = 32;
-static constexpr int PK_N = 4, PK_GFLAG = 7, PK_GAP = 8, PK_GAPV = 9;
+// the rows of the vector pass are hq's (slots Q_* of pair_esph_solid_slots.h), read in
+// blocks of 8 doubles: Q_X .. Q_RHO, Q_C .. Q_BODY, Q_D .. Q_H, Q_E .. Q_ENG; a boundary
+// particle's normal and gap are also in its stress slots (Q_BN .. Q_BGAPV), so that the
+// first two blocks hold what a lane of it needs
+static constexpr int BLK1 = 8, BLK2 = 16, BLK3 = 24;
 
 /* ----------------------------------------------------------------------
    the CPU runs the vector pass (valgrind reports no AVX-512: scalar there)
@@ -82,7 +79,7 @@ namespace {
 
 // what one particle's bulk pairs read
 struct BulkCtx {
-  const double *pk;    // packed rows (PK_*), stride doubles per atom
+  const double *pk;    // rows (hq: Q_*), stride doubles per atom
   int stride;
   double norm_hinv, hinv, h0, epsh2;    // kernel and viscosity constants (constant h)
   double alpha, beta, beta_ratio, fconv;
@@ -175,7 +172,7 @@ ESPH_AVX512_INLINE __mmask8 load_chunk(const BulkCtx &c, const int *jlist, int j
       (__m256i *) js,
       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), _mm256_set1_epi32(NEIGHMASK)));
   load_cols(c.pk, c.stride, js, 0, c0);
-  load_cols(c.pk, c.stride, js, 8, c1);
+  load_cols(c.pk, c.stride, js, BLK1, c1);
   return m;
 }
 
@@ -206,17 +203,17 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
 {
   const double *pi_ = c.pk + (size_t) i * c.stride;
   const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
-  const __m512d xi = bcast(pi_[PK_X]), yi = bcast(pi_[PK_X + 1]), zi = bcast(pi_[PK_X + 2]);
-  const __m512d vi0 = bcast(pi_[PK_V]), vi1 = bcast(pi_[PK_V + 1]), vi2 = bcast(pi_[PK_V + 2]);
-  const __m512d rhoi = bcast(pi_[PK_RHO]), ci = bcast(pi_[PK_C]), mi = bcast(pi_[PK_M]);
-  const __m512d bi = bcast(pi_[PK_BODY]);
+  const __m512d xi = bcast(pi_[Q_X]), yi = bcast(pi_[Q_X + 1]), zi = bcast(pi_[Q_X + 2]);
+  const __m512d vi0 = bcast(pi_[Q_V]), vi1 = bcast(pi_[Q_V + 1]), vi2 = bcast(pi_[Q_V + 2]);
+  const __m512d rhoi = bcast(pi_[Q_RHO]), ci = bcast(pi_[Q_C]), mi = bcast(pi_[Q_M]);
+  const __m512d bi = bcast(pi_[Q_BODY]);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv), h0 = bcast(c.h0);
   const __m512d epsh2 = bcast(c.epsh2);
   __m512d Ai[6], Di[6];
-  for (int k = 0; k < 6; k++) Ai[k] = bcast(pi_[PK_A + k]);
-  for (int k = 0; k < 6; k++) Di[k] = bcast(c.recon ? pi_[PK_D + k] : 0.0);
-  const __m512d alphai = bcast(c.vswitch ? pi_[PK_ALPHA] : 0.0);
-  const __m512d ei = bcast(c.heat ? pi_[PK_E] : 0.0), zetai = bcast(c.heat ? pi_[PK_ZETA] : 0.0);
+  for (int k = 0; k < 6; k++) Ai[k] = bcast(pi_[Q_A + k]);
+  for (int k = 0; k < 6; k++) Di[k] = bcast(c.recon ? pi_[Q_D + k] : 0.0);
+  const __m512d alphai = bcast(c.vswitch ? pi_[Q_ALPHA] : 0.0);
+  const __m512d ei = bcast(c.heat ? pi_[Q_E] : 0.0), zetai = bcast(c.heat ? pi_[Q_ZETA] : 0.0);
 
   __m512d sf0 = zero, sf1 = zero, sf2 = zero, savh = zero, sheat = zero;
   __m512d sg0 = zero, sg1 = zero, sg2 = zero, sg3 = zero, sg4 = zero, sg5 = zero, sg6 = zero,
@@ -233,8 +230,8 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
   for (int b = 0; b < jnum; b += 8) {
     __m512d c0[8], c1[8];
     const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
-    const __m512d d0 = xi - c0[PK_X], d1 = yi - c0[PK_X + 1], d2 = zi - c0[PK_X + 2];
-    const __m512d mj = c0[PK_M], bj = c1[PK_BODY - 8];
+    const __m512d d0 = xi - c0[Q_X], d1 = yi - c0[Q_X + 1], d2 = zi - c0[Q_X + 2];
+    const __m512d mj = c0[Q_M], bj = c1[Q_BODY - BLK1];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
     // bulk partners: real, of the same body (with contact on), within the support and not
     // coinciding (there the gradient vanishes); the cubic B-spline's dW/dr / r
@@ -255,16 +252,16 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
       if (bk) {
         nbnd++;
         const __m512d w = _mm512_maskz_mov_pd(bk, c.norm * cubic_w(near, q, t));
-        const __m512d n0 = c0[PK_N], n1 = c0[PK_N + 1], n2 = c0[PK_N + 2];
+        const __m512d n0 = c1[Q_BN - BLK1], n1 = c1[Q_BN + 1 - BLK1], n2 = c1[Q_BN + 2 - BLK1];
         sb[0] += w * n0;
         sb[1] += w * n1;
         sb[2] += w * n2;
         sb[3] += w * (-d0 * n0 - d1 * n1 - d2 * n2);
         sb[4] += w;
         if (c.solid) {
-          sb[5] += w * c0[PK_GFLAG];
-          sb[6] += w * c1[PK_GAP - 8];
-          sb[7] += w * c1[PK_GAPV - 8];
+          sb[5] += w * c1[Q_BGFLAG - BLK1];
+          sb[6] += w * c1[Q_BGAP - BLK1];
+          sb[7] += w * c1[Q_BGAPV - BLK1];
         }
       }
     }
@@ -272,14 +269,15 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     const __m512d dwdq = cubic_dwdq(near, q, t);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
-    const __m512d v0 = vi0 - c0[PK_V], v1 = vi1 - c0[PK_V + 1], v2 = vi2 - c0[PK_V + 2];
-    const __m512d rhoj = c0[PK_RHO], cj = c1[PK_C - 8];
-    const __m512d *Aj = c1 + (PK_A - 8);
+    const __m512d v0 = vi0 - c0[Q_V], v1 = vi1 - c0[Q_V + 1], v2 = vi2 - c0[Q_V + 2];
+    const __m512d rhoj = c0[Q_RHO], cj = c1[Q_C - BLK1];
+    const __m512d *Aj = c1 + (Q_A - BLK1);
 
     // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W
     const __m512d T0 = Ai[0] + Aj[0], T1 = Ai[1] + Aj[1], T2 = Ai[2] + Aj[2];
     const __m512d T3 = Ai[3] + Aj[3], T4 = Ai[4] + Aj[4], T5 = Ai[5] + Aj[5];
-    // (in the lanes of boundary particles these slots hold gap values: finite, times g = 0)
+    // (in the lanes of boundary particles these slots hold their normal and gap: finite,
+    // times g = 0)
     const __m512d Tg0 = T0 * g0 + T3 * g1 + T4 * g2;
     const __m512d Tg1 = T3 * g0 + T1 * g1 + T5 * g2;
     const __m512d Tg2 = T4 * g0 + T5 * g1 + T2 * g2;
@@ -288,14 +286,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     const __m512d vr = v0 * d0 + v1 * d1 + v2 * d2;
     const __mmask8 appr = _mm512_mask_cmp_pd_mask(live, vr, zero, _CMP_LT_OQ);
     __m512d c2[8], c3[8];
-    if (appr && (c.recon || c.vswitch)) load_cols(c.pk, c.stride, js, PK_D, c2);
-    if (c.heat) load_cols(c.pk, c.stride, js, PK_E, c3);
+    if (appr && (c.recon || c.vswitch)) load_cols(c.pk, c.stride, js, BLK2, c2);
+    if (c.heat) load_cols(c.pk, c.stride, js, BLK3, c3);
     __m512d pi = zero;
     if (appr) {
       __m512d vrv = vr;
       if (c.recon) {
         // the velocities reconstructed to the pair's midpoint, limited (recon_vr())
-        const __m512d a_i = slope(Di, d0, d1, d2), a_j = slope(c2 + (PK_D - 16), d0, d1, d2);
+        const __m512d a_i = slope(Di, d0, d1, d2), a_j = slope(c2 + (Q_D - BLK2), d0, d1, d2);
         const __m512d p = a_i * a_j;
         const __mmask8 pos = _mm512_mask_cmp_pd_mask(appr, p, zero, _CMP_GT_OQ);
         if (pos) {
@@ -314,7 +312,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
       const __m512d mu = h0 * vrv / (rsq + epsh2);
       __m512d al = bcast(c.alpha), be = bcast(c.beta);
       if (c.vswitch) {
-        al = 0.5 * (alphai + c2[PK_ALPHA - 16]);
+        al = 0.5 * (alphai + c2[Q_ALPHA - BLK2]);
         be = c.beta_ratio * al;
       }
       pi =
@@ -353,10 +351,10 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     }
     if (c.heat) {
       // artificial heat transfer (eqs. 8-10)
-      const __m512d zbar = 0.5 * (zetai + c3[PK_ZETA - 24]);
+      const __m512d zbar = 0.5 * (zetai + c3[Q_ZETA - BLK3]);
       const __m512d rbar = 0.5 * (rhoi + rhoj);
       const __m512d heat = _mm512_maskz_div_pd(
-          live, 2.0 * zbar / rbar * (ei - c3[PK_E - 24]) * dw * rsq, rsq + epsh2);
+          live, 2.0 * zbar / rbar * (ei - c3[Q_E - BLK3]) * dw * rsq, rsq + epsh2);
       sheat += mj * heat;
     }
   }
@@ -398,8 +396,8 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
 {
   const double *pk_ = c.pk + (size_t) k * c.stride;
   const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
-  const __m512d xk = bcast(pk_[PK_X]), yk = bcast(pk_[PK_X + 1]), zk = bcast(pk_[PK_X + 2]);
-  const __m512d bk = bcast(pk_[PK_BODY]);
+  const __m512d xk = bcast(pk_[Q_X]), yk = bcast(pk_[Q_X + 1]), zk = bcast(pk_[Q_X + 2]);
+  const __m512d bk = bcast(pk_[Q_BODY]);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv);
   // B_A (9), B_B (3), B_VSUM (3), B_WSUM, B_M (9), B_XSUM (3): slots B_A + 0 .. 27
   __m512d s[28];
@@ -408,11 +406,11 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
   for (int b = 0; b < jnum; b += 8) {
     __m512d c0[8], c1[8];
     const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
-    const __m512d mp = c0[PK_M];
+    const __m512d mp = c0[Q_M];
     __mmask8 real = _mm512_mask_cmp_pd_mask(m, mp, zero, _CMP_GT_OQ);
-    real = _mm512_mask_cmp_pd_mask(real, c1[PK_BODY - 8], bk, _CMP_EQ_OQ);
+    real = _mm512_mask_cmp_pd_mask(real, c1[Q_BODY - BLK1], bk, _CMP_EQ_OQ);
     if (!real) continue;
-    const __m512d d0 = xk - c0[PK_X], d1 = yk - c0[PK_X + 1], d2 = zk - c0[PK_X + 2];
+    const __m512d d0 = xk - c0[Q_X], d1 = yk - c0[Q_X + 1], d2 = zk - c0[Q_X + 2];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
     const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d q = r * hinv;
@@ -426,8 +424,8 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
     // V_p, 0 in the lanes off the mask
-    const __m512d Vp = _mm512_maskz_div_pd(in, mp, c0[PK_RHO]);
-    const __m512d va0 = Vp * c0[PK_V], va1 = Vp * c0[PK_V + 1], va2 = Vp * c0[PK_V + 2];
+    const __m512d Vp = _mm512_maskz_div_pd(in, mp, c0[Q_RHO]);
+    const __m512d va0 = Vp * c0[Q_V], va1 = Vp * c0[Q_V + 1], va2 = Vp * c0[Q_V + 2];
     s[0] += va0 * g0;
     s[1] += va0 * g1;
     s[2] += va0 * g2;
@@ -441,9 +439,9 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     s[10] += Vp * g1;
     s[11] += Vp * g2;
     const __m512d Vw = Vp * w;
-    s[12] += Vw * c0[PK_V];
-    s[13] += Vw * c0[PK_V + 1];
-    s[14] += Vw * c0[PK_V + 2];
+    s[12] += Vw * c0[Q_V];
+    s[13] += Vw * c0[Q_V + 1];
+    s[14] += Vw * c0[Q_V + 2];
     s[15] += Vw;
     // x_p - x_k = -dx
     const __m512d xa0 = -Vp * d0, xa1 = -Vp * d1, xa2 = -Vp * d2;
@@ -485,66 +483,26 @@ bool PairESPHSolid::simd_ready() const
 }
 
 /* ----------------------------------------------------------------------
-   the packed rows of the vector pass, one per atom (owned and ghost):
-   position, mass, velocity, density, sound speed, sigma / rho^2, body,
-   and with the reconstruction, the switch or heat transfer D_i, alpha_i,
-   e and zeta
+   the slots of the rows (hq) that only the vector pass reads, for every
+   atom (owned and ghost, after the forward communication): position,
+   mass, body
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::simd_pack()
 {
   const int nall = atom->nlocal + atom->nghost;
-  simd_stride = heat_flag ? PK_STRIDE_MAX : ((recon_flag || vswitch_flag) ? PK_E : PK_D);
-  const bigint need = (bigint) nall * simd_stride;
-  if (need > simd_pk_size) {
-    memory->destroy(simd_pk);
-    simd_pk_size = need + need / 8;
-    memory->create(simd_pk, simd_pk_size, "pair:simd_pk");
-  }
   double **x = atom->x;
   const double *rmass = state->rmass;
   const int *body = state->body;
-  const int stride = simd_stride;
-  const int qal = vswitch_flag ? (astress_flag ? Q_ALPHA_AST : Q_ALPHA) : -1;
-  const int qd = recon_flag ? qcol_d : -1;
-  double *const pk = simd_pk;
   double **const q = hq;
-  const double dt = dt_step;
   ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
-      double *p = pk + (size_t) i * stride;
-      for (int k = 0; k < stride; k++) p[k] = 0.0;
-      p[PK_X] = x[i][0];
-      p[PK_X + 1] = x[i][1];
-      p[PK_X + 2] = x[i][2];
-      p[PK_BODY] = body ? body[i] : 0.0;
-      if (!(rmass[i] > 0.0)) {
-        const double *qi = q[i];
-        p[PK_N] = qi[Q_N];
-        p[PK_N + 1] = qi[Q_N + 1];
-        p[PK_N + 2] = qi[Q_N + 2];
-        if (qi[Q_GAP] < GAP_NONE) {
-          p[PK_GFLAG] = 1.0;
-          p[PK_GAP] = qi[Q_GAP] + dt * qi[Q_GAPV];
-          p[PK_GAPV] = qi[Q_GAPV];
-        }
-        continue;
-      }
-      const double *qi = q[i];
-      p[PK_M] = rmass[i];
-      p[PK_V] = qi[Q_V];
-      p[PK_V + 1] = qi[Q_V + 1];
-      p[PK_V + 2] = qi[Q_V + 2];
-      p[PK_RHO] = qi[Q_RHO];
-      p[PK_C] = qi[Q_C];
-      for (int k = 0; k < 6; k++) p[PK_A + k] = qi[Q_A + k];
-      if (qd >= 0)
-        for (int k = 0; k < 6; k++) p[PK_D + k] = qi[qd + k];
-      if (qal >= 0) p[PK_ALPHA] = qi[qal];
-      if (stride > PK_E) {
-        p[PK_E] = qi[Q_E];
-        p[PK_ZETA] = qi[Q_ZETA];
-      }
+      double *p = q[i];
+      p[Q_X] = x[i][0];
+      p[Q_X + 1] = x[i][1];
+      p[Q_X + 2] = x[i][2];
+      p[Q_M] = rmass[i];
+      p[Q_BODY] = body ? body[i] : 0.0;
     }
   });
 }
@@ -609,8 +567,8 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   int **firstneigh = listfull->firstneigh;
 
   BulkCtx c;
-  c.pk = simd_pk;
-  c.stride = simd_stride;
+  c.pk = hq[0];
+  c.stride = hq_cols;
   c.hinv = 1.0 / h0;
   c.norm_hinv = kernel_norm(kernel, dim, h0) * c.hinv;
   c.h0 = h0;

@@ -82,25 +82,34 @@ static constexpr int B_M = 16;       // 16..24: sum_p V_p (x_p - x_k) (x) grad_k
 static constexpr int B_XSUM = 25;    // 25..27: sum_p V_p W_kp (x_p - x_k)
 static constexpr int B_GAP = 28;     // 28..31: facing partners (contact_bnd_merge)
 
-// slots of the hoisted array hq[i][*]
-static constexpr int Q_V = 0;    // 0..2 predicted velocity
-static constexpr int Q_RHO = 3;
-static constexpr int Q_C = 4;
-static constexpr int Q_H = 5;
-static constexpr int Q_A = 6;       // 6..11 sigma / rho^2 (Voigt)
-static constexpr int Q_N = 12;      // 12..14 normal
-static constexpr int Q_GAP = 15;    // surface gap (d_esph_gap)
-static constexpr int Q_E = 16;
-static constexpr int Q_ZETA = 17;
-static constexpr int Q_GAPV = 18;    // its rate (d_esph_gapv)
-static constexpr int Q_ENG = 19;     // engagement with another body (d_esph_eng)
+// slots of the hoisted array hq[i][*]: one row per atom (owned and ghost), in blocks of 8
+// that the vector pass (pair_esph_solid_simd.cpp) loads whole, so that its rows are this
+// array's. A boundary particle's row has mass, density and sound speed 0
+static constexpr int Q_X = 0;    // 0..2 position (filled for the vector pass only)
+static constexpr int Q_M = 3;    // mass (vector pass only)
+static constexpr int Q_V = 4;    // 4..6 predicted velocity
+static constexpr int Q_RHO = 7;
+static constexpr int Q_C = 8;
+static constexpr int Q_A = 9;         // 9..14 sigma / rho^2 (Voigt)
+static constexpr int Q_BODY = 15;     // body (vector pass only)
+static constexpr int Q_D = 16;        // 16..21 strain rate D_i of the reconstruction (visc/recon)
+static constexpr int Q_ALPHA = 22;    // the switched viscosity coefficient alpha_i (visc/switch)
+static constexpr int Q_H = 23;
+static constexpr int Q_E = 24;
+static constexpr int Q_ZETA = 25;
+static constexpr int Q_N = 26;       // 26..28 normal
+static constexpr int Q_GAP = 29;     // surface gap (d_esph_gap)
+static constexpr int Q_GAPV = 30;    // its rate (d_esph_gapv)
+static constexpr int Q_ENG = 31;     // engagement with another body (d_esph_eng)
+// a boundary particle, whose sigma / rho^2 is 0, has in those slots (for the vector pass):
+// its normal, 1 if it has a gap (else 0), its gap forecast gap + dt gapdot and its gap
+// rate (both 0 without a gap): add_gap_sums()'s terms
+static constexpr int Q_BN = Q_A, Q_BGFLAG = Q_A + 3, Q_BGAP = Q_A + 4, Q_BGAPV = Q_A + 5;
 // with the artificial stress only (not communicated: computed for ghosts from Q_A)
-static constexpr int Q_R = 20;        // 20..25 artificial stress R / rho^2 (Voigt)
-static constexpr int Q_RFLAG = 26;    // 1 if R != 0
-// with the viscosity switch: alpha_i after those, Q_ALPHA or Q_ALPHA_AST
-static constexpr int Q_ALPHA = 20;
-static constexpr int Q_ALPHA_AST = 27;
-// with the gradient correction: B_i (9, row major) in the last columns, from qcol_b
+static constexpr int Q_R = 32;        // 32..37 artificial stress R / rho^2 (Voigt)
+static constexpr int Q_RFLAG = 38;    // 1 if R != 0
+// with the gradient correction bonet/lok: B_i (9, row major) in the last columns, from qcol_b;
+// with contact/normal cone the cone C_i (Voigt, 6) after it, from qcol_n
 
 enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR };
 
