@@ -50,12 +50,20 @@ inline void matrix_to_voigt(const Eigen::Matrix3d &m, double *s)
 
 inline void jaumann_rate(const Eigen::Matrix3d &L, const double *s, double G, double *dsdt)
 {
-  const Eigen::Matrix3d D = 0.5 * (L + L.transpose());
-  const Eigen::Matrix3d W = 0.5 * (L - L.transpose());
-  const Eigen::Matrix3d S = voigt_to_matrix(s);
-  Eigen::Matrix3d rate = 2.0 * G * D + W * S - S * W;
-  rate.diagonal().array() -= 2.0 * G * D.trace() / 3.0;
-  matrix_to_voigt(rate, dsdt);
+  // the spin w_ab = W_ab (a < b) and the strain rate D; W S - S W is symmetric, its entry
+  // ab is (W S)_ab + (W S)_ba, written out for the six stored components
+  const double w01 = 0.5 * (L(0, 1) - L(1, 0));
+  const double w02 = 0.5 * (L(0, 2) - L(2, 0));
+  const double w12 = 0.5 * (L(1, 2) - L(2, 1));
+  const double sxx = s[0], syy = s[1], szz = s[2], sxy = s[3], sxz = s[4], syz = s[5];
+  const double g2 = 2.0 * G;
+  const double dev = (L(0, 0) + L(1, 1) + L(2, 2)) / 3.0;
+  dsdt[0] = g2 * (L(0, 0) - dev) + 2.0 * (w01 * sxy + w02 * sxz);
+  dsdt[1] = g2 * (L(1, 1) - dev) + 2.0 * (w12 * syz - w01 * sxy);
+  dsdt[2] = g2 * (L(2, 2) - dev) - 2.0 * (w02 * sxz + w12 * syz);
+  dsdt[3] = G * (L(0, 1) + L(1, 0)) + w01 * (syy - sxx) + w02 * syz + w12 * sxz;
+  dsdt[4] = G * (L(0, 2) + L(2, 0)) + w01 * syz + w02 * (szz - sxx) - w12 * sxy;
+  dsdt[5] = G * (L(1, 2) + L(2, 1)) - w01 * sxz - w02 * sxy + w12 * (szz - syy);
 }
 
 /* von Mises equivalent stress sqrt(3/2 S:S) of a deviator in Voigt order

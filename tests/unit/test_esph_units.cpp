@@ -218,6 +218,30 @@ TEST(Strength, HookeDeviator)
   EXPECT_DOUBLE_EQ(ds[3], 0.0);
 }
 
+// The written-out rate against its definition dS/dt = 2 G (D - tr(D)/3 I) + W S - S W in
+// matrix form, for general (non-symmetric) L and S: every component and sign, to round-off
+// (1e-14 of the largest term)
+TEST(Strength, JaumannMatchesMatrixForm)
+{
+  const double Ls[9] = {0.3, -1.7, 2.2, 0.9, -0.4, 1.3, -2.6, 0.8, 1.1};
+  const double s[6] = {1.5, -0.7, 2.9, -1.2, 0.6, 2.4};
+  const double G = 3.7;
+  Eigen::Matrix3d L;
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) L(r, c) = Ls[3 * r + c];
+  const Eigen::Matrix3d D = 0.5 * (L + L.transpose()), W = 0.5 * (L - L.transpose());
+  const Eigen::Matrix3d S = voigt_to_matrix(s);
+  const Eigen::Matrix3d R =
+      2.0 * G * (D - D.trace() / 3.0 * Eigen::Matrix3d::Identity()) + W * S - S * W;
+  double ds[6];
+  jaumann_rate(L, s, G, ds);
+  const double expect[6] = {R(0, 0), R(1, 1), R(2, 2), R(0, 1), R(0, 2), R(1, 2)};
+  for (int k = 0; k < 6; k++) EXPECT_NEAR(ds[k], expect[k], 1.0e-14 * 40.0) << "component " << k;
+  // the matrix form is symmetric: its lower triangle is the stored upper one
+  EXPECT_NEAR(R(1, 0), R(0, 1), 1.0e-13);
+  EXPECT_NEAR(R(2, 1), R(1, 2), 1.0e-13);
+}
+
 // Contact rule: the common normal, the surface gap from boundary particles, the weight.
 TEST(Contact, NormalGapWeight)
 {
