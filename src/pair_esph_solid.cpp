@@ -1308,7 +1308,9 @@ double PairESPHSolid::memory_usage()
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   // the vector pass: the scalar loop's split list (the full list is counted by the
   // neighbor lists; its rows are hq's)
-  bytes += (double) (simd_first.capacity() + simd_j.capacity()) * sizeof(int);
+  bytes += (double) (simd_first.capacity() + simd_j.capacity() + simd_nbulk.capacity() +
+                     simd_nbnd.capacity()) *
+      sizeof(int);
   return bytes;
 }
 

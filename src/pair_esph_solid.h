@@ -111,6 +111,9 @@ class PairESPHSolid : public Pair {
   // the half list's other pairs, for the scalar loop: those of entry ii at
   // simd_j[simd_first[ii] .. simd_first[ii + 1]) (simd_split(), at each new list)
   std::vector<int> simd_first, simd_j;
+  // per owned atom: its bulk partners and then its boundary partners, the first entries of
+  // its full list's neighbours (simd_split() orders them)
+  std::vector<int> simd_nbulk, simd_nbnd;
   bigint simd_ncalls;
   int simd_sep;
   int simd_bnd;    // the boundary-real pairs of one body are the vector pass's too

@@ -85,7 +85,6 @@ struct BulkCtx {
   double alpha, beta, beta_ratio, fconv;
   int recon;    // RECON_OFF, RECON_VANLEER, RECON_MINMOD
   int vswitch, heat;
-  int sep;      // pairs of different bodies are not bulk pairs (contact on)
   int bnd;      // boundary-real pairs of one body here too (not in the scalar loop)
   int solid;    // contact solid: the gap sums of those
   double norm;
@@ -188,25 +187,25 @@ ESPH_AVX512_INLINE __m512d cubic_dwdq(__mmask8 near, __m512d q, __m512d t)
 }
 
 /* ----------------------------------------------------------------------
-   the bulk pairs of particle i among its full list's jnum neighbours
-   jlist, eight at a time: the scalar loop's same-body branch (stress
-   force, Monaghan-Gingold viscosity with its reconstruction or switch, G,
-   viscous heating, M of gradient corrected, heat transfer), i's side
-   only, into fi and ai. A lane whose neighbour is not a bulk partner
-   (beyond the kernel's support, a boundary particle, another body) has
-   dW = 0 and mask-zeroed viscosity and heat: it adds exact zeros
+   the bulk pairs of particle i, its full list's first nbulk neighbours
+   jlist (simd_split()), eight at a time: the scalar loop's same-body
+   branch (stress force, Monaghan-Gingold viscosity with its
+   reconstruction or switch, G, viscous heating, M of gradient corrected,
+   heat transfer), i's side only, into fi and ai; then its sums over the
+   boundary particles of its body, the next nbnd neighbours. A lane
+   beyond the kernel's support or past the list has dW = 0 (W = 0) and
+   mask-zeroed viscosity and heat: it adds exact zeros
 ------------------------------------------------------------------------- */
 
 template <int CORR>
-ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, double *fi,
-                           double *ai)
+ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk, int nbnd,
+                           double *fi, double *ai)
 {
   const double *pi_ = c.pk + (size_t) i * c.stride;
   const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
   const __m512d xi = bcast(pi_[Q_X]), yi = bcast(pi_[Q_X + 1]), zi = bcast(pi_[Q_X + 2]);
   const __m512d vi0 = bcast(pi_[Q_V]), vi1 = bcast(pi_[Q_V + 1]), vi2 = bcast(pi_[Q_V + 2]);
   const __m512d rhoi = bcast(pi_[Q_RHO]), ci = bcast(pi_[Q_C]), mi = bcast(pi_[Q_M]);
-  const __m512d bi = bcast(pi_[Q_BODY]);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv), h0 = bcast(c.h0);
   const __m512d epsh2 = bcast(c.epsh2);
   __m512d Ai[6], Di[6];
@@ -220,51 +219,23 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
           sg7 = zero, sg8 = zero;
   __m512d sm0 = zero, sm1 = zero, sm2 = zero, sm3 = zero, sm4 = zero, sm5 = zero, sm6 = zero,
           sm7 = zero, sm8 = zero;
-  // the normal and gap sums from i's own body's boundary particles (add_normal_sums(),
-  // add_gap_sums()): n W, (x_k - x_i).n W, W; W flag, W gap, W gap rate
-  __m512d sb[8];
-  for (int k = 0; k < 8; k++) sb[k] = zero;
-  int nbnd = 0;
 
   alignas(32) int js[8];
-  for (int b = 0; b < jnum; b += 8) {
+  for (int b = 0; b < nbulk; b += 8) {
     __m512d c0[8], c1[8];
-    const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
+    const __mmask8 m = load_chunk(c, jlist, nbulk, b, js, c0, c1);
     const __m512d d0 = xi - c0[Q_X], d1 = yi - c0[Q_X + 1], d2 = zi - c0[Q_X + 2];
-    const __m512d mj = c0[Q_M], bj = c1[Q_BODY - BLK1];
+    const __m512d mj = c0[Q_M];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
-    // bulk partners: real, of the same body (with contact on), within the support and not
+    // the bulk partners (simd_split() put them first) within the support and not
     // coinciding (there the gradient vanishes); the cubic B-spline's dW/dr / r
     // (kernel_eval), 0 in every other lane
-    __mmask8 bulk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_GT_OQ);
-    if (c.sep) bulk = _mm512_mask_cmp_pd_mask(bulk, bj, bi, _CMP_EQ_OQ);
     const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d q = r * hinv;
-    const __mmask8 in = _mm512_mask_cmp_pd_mask(bulk, q, two, _CMP_LT_OQ);
+    const __mmask8 in = _mm512_mask_cmp_pd_mask(m, q, two, _CMP_LT_OQ);
     const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
     const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
     const __m512d t = two - q;
-    if (c.bnd) {
-      // boundary particles of i's body within the support
-      __mmask8 bk = _mm512_mask_cmp_pd_mask(m, mj, zero, _CMP_EQ_OQ);
-      bk = _mm512_mask_cmp_pd_mask(bk, bj, bi, _CMP_EQ_OQ);
-      bk = _mm512_mask_cmp_pd_mask(bk, q, two, _CMP_LT_OQ);
-      if (bk) {
-        nbnd++;
-        const __m512d w = _mm512_maskz_mov_pd(bk, c.norm * cubic_w(near, q, t));
-        const __m512d n0 = c1[Q_BN - BLK1], n1 = c1[Q_BN + 1 - BLK1], n2 = c1[Q_BN + 2 - BLK1];
-        sb[0] += w * n0;
-        sb[1] += w * n1;
-        sb[2] += w * n2;
-        sb[3] += w * (-d0 * n0 - d1 * n1 - d2 * n2);
-        sb[4] += w;
-        if (c.solid) {
-          sb[5] += w * c1[Q_BGFLAG - BLK1];
-          sb[6] += w * c1[Q_BGAP - BLK1];
-          sb[7] += w * c1[Q_BGAPV - BLK1];
-        }
-      }
-    }
     if (!live) continue;
     const __m512d dwdq = cubic_dwdq(near, q, t);
     const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
@@ -276,8 +247,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     // stress force per m_i m_j: (sigma_i / rho_i^2 + sigma_j / rho_j^2) grad_i W
     const __m512d T0 = Ai[0] + Aj[0], T1 = Ai[1] + Aj[1], T2 = Ai[2] + Aj[2];
     const __m512d T3 = Ai[3] + Aj[3], T4 = Ai[4] + Aj[4], T5 = Ai[5] + Aj[5];
-    // (in the lanes of boundary particles these slots hold their normal and gap: finite,
-    // times g = 0)
+    // (lanes past the partners read atom 0's row: finite, times g = 0)
     const __m512d Tg0 = T0 * g0 + T3 * g1 + T4 * g2;
     const __m512d Tg1 = T3 * g0 + T1 * g1 + T5 * g2;
     const __m512d Tg2 = T4 * g0 + T5 * g1 + T2 * g2;
@@ -359,6 +329,43 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
     }
   }
 
+  // the normal and gap sums from i's own body's boundary particles, next in the list
+  // (add_normal_sums(), add_gap_sums()): n W, (x_k - x_i).n W, W; W flag, W gap, W gap rate
+  if (nbnd > 0) {
+    __m512d sb[8];
+    for (int k = 0; k < 8; k++) sb[k] = zero;
+    const int *blist = jlist + nbulk;
+    for (int b = 0; b < nbnd; b += 8) {
+      __m512d c0[8], c1[8];
+      const __mmask8 m = load_chunk(c, blist, nbnd, b, js, c0, c1);
+      const __m512d d0 = xi - c0[Q_X], d1 = yi - c0[Q_X + 1], d2 = zi - c0[Q_X + 2];
+      const __m512d q = _mm512_sqrt_pd(d0 * d0 + d1 * d1 + d2 * d2) * hinv;
+      const __mmask8 bk = _mm512_mask_cmp_pd_mask(m, q, two, _CMP_LT_OQ);
+      if (!bk) continue;
+      const __mmask8 near = _mm512_cmp_pd_mask(q, one, _CMP_LT_OQ);
+      const __m512d w = _mm512_maskz_mov_pd(bk, c.norm * cubic_w(near, q, two - q));
+      const __m512d n0 = c1[Q_BN - BLK1], n1 = c1[Q_BN + 1 - BLK1], n2 = c1[Q_BN + 2 - BLK1];
+      sb[0] += w * n0;
+      sb[1] += w * n1;
+      sb[2] += w * n2;
+      sb[3] += w * (-d0 * n0 - d1 * n1 - d2 * n2);
+      sb[4] += w;
+      if (c.solid) {
+        sb[5] += w * c1[Q_BGFLAG - BLK1];
+        sb[6] += w * c1[Q_BGAP - BLK1];
+        sb[7] += w * c1[Q_BGAPV - BLK1];
+      }
+    }
+    double bs[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    reduce_add8(sb, bs);
+    for (int k = 0; k < 5; k++) ai[A_NSUM + k] += bs[k];
+    if (c.solid) {
+      ai[A_GW] += bs[5];
+      ai[A_GG] += bs[6];
+      ai[A_GV] += bs[7];
+    }
+  }
+
   // the sums in the slot order of acc (A_G .. A_AVHEAT, A_HEAT; A_M)
   const __m512d g8[8] = {sg0, sg1, sg2, sg3, sg4, sg5, sg6, sg7};
   reduce_add8(g8, ai + A_G);
@@ -373,21 +380,12 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int jnum, 
   fi[0] += _mm512_reduce_add_pd(sf0);
   fi[1] += _mm512_reduce_add_pd(sf1);
   fi[2] += _mm512_reduce_add_pd(sf2);
-  if (nbnd) {
-    double b[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    reduce_add8(sb, b);
-    for (int k = 0; k < 5; k++) ai[A_NSUM + k] += b[k];
-    if (c.solid) {
-      ai[A_GW] += b[5];
-      ai[A_GG] += b[6];
-      ai[A_GV] += b[7];
-    }
-  }
 }
 
 /* ----------------------------------------------------------------------
    boundary particle k: its sums over the real particles p of its body
-   within the support (the scalar loop's boundary branch, k's side): with
+   within the support, its full list's first jnum neighbours jlist
+   (simd_split()) (the scalar loop's boundary branch, k's side): with
    V_p = m_p / rho_p, sum V_p v_p (x) grad_k W, V_p grad_k W, V_p W v_p,
    V_p W, V_p (x_p - x_k) (x) grad_k W, V_p W (x_p - x_k)
 ------------------------------------------------------------------------- */
@@ -397,7 +395,6 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
   const double *pk_ = c.pk + (size_t) k * c.stride;
   const __m512d zero = _mm512_setzero_pd(), one = bcast(1.0), two = bcast(2.0);
   const __m512d xk = bcast(pk_[Q_X]), yk = bcast(pk_[Q_X + 1]), zk = bcast(pk_[Q_X + 2]);
-  const __m512d bk = bcast(pk_[Q_BODY]);
   const __m512d hinv = bcast(c.hinv), nh = bcast(c.norm_hinv);
   // B_A (9), B_B (3), B_VSUM (3), B_WSUM, B_M (9), B_XSUM (3): slots B_A + 0 .. 27
   __m512d s[28];
@@ -405,11 +402,9 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
   alignas(32) int js[8];
   for (int b = 0; b < jnum; b += 8) {
     __m512d c0[8], c1[8];
-    const __mmask8 m = load_chunk(c, jlist, jnum, b, js, c0, c1);
+    // the real particles of k's body (simd_split() put them first)
+    const __mmask8 real = load_chunk(c, jlist, jnum, b, js, c0, c1);
     const __m512d mp = c0[Q_M];
-    __mmask8 real = _mm512_mask_cmp_pd_mask(m, mp, zero, _CMP_GT_OQ);
-    real = _mm512_mask_cmp_pd_mask(real, c1[Q_BODY - BLK1], bk, _CMP_EQ_OQ);
-    if (!real) continue;
     const __m512d d0 = xk - c0[Q_X], d1 = yk - c0[Q_X + 1], d2 = zk - c0[Q_X + 2];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
     const __m512d r = _mm512_sqrt_pd(rsq);
@@ -521,7 +516,7 @@ void PairESPHSolid::simd_split(int bnd)
   simd_bnd = bnd && (qcol_n < 0);
   const int inum = list->inum;
   if (simd_ncalls == neighbor->ncalls && simd_sep == sep + 2 * simd_bnd &&
-      (int) simd_first.size() == inum + 1)
+      (int) simd_first.size() == inum + 1 && (int) simd_nbulk.size() == atom->nlocal)
     return;
   simd_ncalls = neighbor->ncalls;
   simd_sep = sep + 2 * simd_bnd;
@@ -551,6 +546,44 @@ void PairESPHSolid::simd_split(int bnd)
     }
   }
   simd_first[inum] = (int) simd_j.size();
+
+  // the full list's neighbours of each particle in the order of the vector pass: first
+  // the bulk partners of a real particle (the real particles of a boundary particle's
+  // body), then (simd_bnd) the boundary particles of a real particle's body, then the
+  // others, which the pass skips. Only the order within each particle's neighbours
+  // changes (the half list was derived from it when both were built)
+  const int *ilistf = listfull->ilist;
+  const int *numf = listfull->numneigh;
+  int **firstf = listfull->firstneigh;
+  simd_nbulk.assign(atom->nlocal, 0);
+  simd_nbnd.assign(atom->nlocal, 0);
+  std::vector<int> part[3];
+  for (int ii = 0; ii < listfull->inum; ii++) {
+    const int i = ilistf[ii];
+    const int ireal = rmass[i] > 0.0;
+    if (!ireal && !simd_bnd) continue;
+    int *jlist = firstf[i];
+    const int jnum = numf[i];
+    for (auto &p : part) p.clear();
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int jreal = rmass[j] > 0.0;
+      const int same = (body[j] == body[i]);
+      int cls = 2;
+      if (ireal && jreal && (!sep || same))
+        cls = 0;
+      else if (ireal && simd_bnd && !jreal && same)
+        cls = 1;
+      else if (!ireal && jreal && same)
+        cls = 0;
+      part[cls].push_back(jlist[jj]);
+    }
+    int n = 0;
+    for (auto &p : part)
+      for (const int j : p) jlist[n++] = j;
+    simd_nbulk[i] = (int) part[0].size();
+    simd_nbnd[i] = (int) part[1].size();
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -560,11 +593,12 @@ void PairESPHSolid::simd_split(int bnd)
 
 void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
 {
+  (void) bnd;    // (simd_split() has sorted the lists by it)
 #ifdef ESPH_SIMD_AVX512
   const double *rmass = state->rmass;
   const int *ilist = list->ilist;
-  const int *numneigh = listfull->numneigh;
   int **firstneigh = listfull->firstneigh;
+  const int *nbulk = simd_nbulk.data(), *nbnd = simd_nbnd.data();
 
   BulkCtx c;
   c.pk = hq[0];
@@ -580,7 +614,6 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   c.recon = recon_flag;
   c.vswitch = vswitch_flag;
   c.heat = heat_flag;
-  c.sep = bnd && (contact != CONTACT_OFF);
   c.bnd = simd_bnd;
   c.solid = (contact == CONTACT_SOLID);
   c.norm = kernel_norm(kernel, dim, h0);
@@ -589,16 +622,15 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   for (int ii = out.iifrom; ii < out.iito; ii++) {
     const int i = ilist[ii];
     if (!(rmass[i] > 0.0)) {
-      if (c.bnd) bnd_atom(c, i, firstneigh[i], numneigh[i], out.acc[i]);
+      if (c.bnd) bnd_atom(c, i, firstneigh[i], nbulk[i], out.acc[i]);
       continue;
     }
     if (corr)
-      bulk_atom<1>(c, i, firstneigh[i], numneigh[i], out.f[i], out.acc[i]);
+      bulk_atom<1>(c, i, firstneigh[i], nbulk[i], nbnd[i], out.f[i], out.acc[i]);
     else
-      bulk_atom<0>(c, i, firstneigh[i], numneigh[i], out.f[i], out.acc[i]);
+      bulk_atom<0>(c, i, firstneigh[i], nbulk[i], nbnd[i], out.f[i], out.acc[i]);
   }
 #else
-  (void) bnd;
   (void) out;
 #endif
 }
