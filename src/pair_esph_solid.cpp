@@ -93,6 +93,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   simd_ncalls = -1;
   simd_sep = -1;
   simd_bnd = 0;
+  simd_own = 0;
 
   state = new ESPHState(lmp);
   units.set(force->ftm2v, force->mvv2e, force->nktv2p);
@@ -1309,7 +1310,7 @@ double PairESPHSolid::memory_usage()
   // the vector pass: the scalar loop's split list (the full list is counted by the
   // neighbor lists; its rows are hq's)
   bytes += (double) (simd_first.capacity() + simd_j.capacity() + simd_nbulk.capacity() +
-                     simd_nbnd.capacity()) *
+                     simd_nbnd.capacity() + simd_own_first.capacity() + simd_own_j.capacity()) *
       sizeof(int);
   return bytes;
 }

@@ -114,6 +114,10 @@ class PairESPHSolid : public Pair {
   // per owned atom: its bulk partners and then its boundary partners, the first entries of
   // its full list's neighbours (simd_split() orders them)
   std::vector<int> simd_nbulk, simd_nbnd;
+  // another style shares the full list: the partners are copied into simd_own_j (those of
+  // atom i from simd_own_first[i]) instead of ordered in place
+  int simd_own;
+  std::vector<int> simd_own_first, simd_own_j;
   bigint simd_ncalls;
   int simd_sep;
   int simd_bnd;    // the boundary-real pairs of one body are the vector pass's too

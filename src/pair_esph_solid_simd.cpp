@@ -515,11 +515,15 @@ void PairESPHSolid::simd_split(int bnd)
   // cones (their sums are the scalar loop's)
   simd_bnd = bnd && (qcol_n < 0);
   const int inum = list->inum;
-  if (simd_ncalls == neighbor->ncalls && simd_sep == sep + 2 * simd_bnd &&
+  // made anew when the lists were built for this computation (neighbor->ago is 0 then; a
+  // rerun sets ncalls back to 0 at each frame) or the partners changed (the options, the
+  // contact rule, with run pre no)
+  const int key = sep + 2 * simd_bnd + 4 * contact;
+  if (neighbor->ago > 0 && simd_ncalls == neighbor->ncalls && simd_sep == key &&
       (int) simd_first.size() == inum + 1 && (int) simd_nbulk.size() == atom->nlocal)
     return;
   simd_ncalls = neighbor->ncalls;
-  simd_sep = sep + 2 * simd_bnd;
+  simd_sep = key;
   const double *rmass = state->rmass;
   const int *body = state->body;
   const int *ilist = list->ilist;
@@ -550,8 +554,17 @@ void PairESPHSolid::simd_split(int bnd)
   // the full list's neighbours of each particle in the order of the vector pass: first
   // the bulk partners of a real particle (the real particles of a boundary particle's
   // body), then (simd_bnd) the boundary particles of a real particle's body, then the
-  // others, which the pass skips. Only the order within each particle's neighbours
-  // changes (the half list was derived from it when both were built)
+  // others, which the pass skips. In place (only the order within each particle's
+  // neighbours changes; the half list was derived from it when both were built), unless
+  // another style's list is a copy of it (compute centro/atom and the like pick their
+  // nearest neighbours in the list's order): then into a copy of the pass's own
+  simd_own = 0;
+  for (int m = 0; m < neighbor->nlist; m++)
+    if (neighbor->lists[m] && neighbor->lists[m] != listfull &&
+        neighbor->lists[m]->listcopy == listfull)
+      simd_own = 1;
+  simd_own_first.assign(simd_own ? atom->nlocal : 0, 0);
+  simd_own_j.clear();
   const int *ilistf = listfull->ilist;
   const int *numf = listfull->numneigh;
   int **firstf = listfull->firstneigh;
@@ -578,9 +591,15 @@ void PairESPHSolid::simd_split(int bnd)
         cls = 0;
       part[cls].push_back(jlist[jj]);
     }
-    int n = 0;
-    for (auto &p : part)
-      for (const int j : p) jlist[n++] = j;
+    if (simd_own) {
+      simd_own_first[i] = (int) simd_own_j.size();
+      for (int k = 0; k < 2; k++)
+        simd_own_j.insert(simd_own_j.end(), part[k].begin(), part[k].end());
+    } else {
+      int n = 0;
+      for (auto &p : part)
+        for (const int j : p) jlist[n++] = j;
+    }
     simd_nbulk[i] = (int) part[0].size();
     simd_nbnd[i] = (int) part[1].size();
   }
@@ -599,6 +618,12 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   const int *ilist = list->ilist;
   int **firstneigh = listfull->firstneigh;
   const int *nbulk = simd_nbulk.data(), *nbnd = simd_nbnd.data();
+  // the partners in the full list's own rows, or in the pass's copy (simd_split())
+  const int *own_j = simd_own ? simd_own_j.data() : nullptr;
+  const int *own_first = simd_own ? simd_own_first.data() : nullptr;
+  auto partners = [&](int i) -> const int * {
+    return own_j ? own_j + own_first[i] : firstneigh[i];
+  };
 
   BulkCtx c;
   c.pk = hq[0];
@@ -622,13 +647,13 @@ void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
   for (int ii = out.iifrom; ii < out.iito; ii++) {
     const int i = ilist[ii];
     if (!(rmass[i] > 0.0)) {
-      if (c.bnd) bnd_atom(c, i, firstneigh[i], nbulk[i], out.acc[i]);
+      if (c.bnd) bnd_atom(c, i, partners(i), nbulk[i], out.acc[i]);
       continue;
     }
     if (corr)
-      bulk_atom<1>(c, i, firstneigh[i], nbulk[i], nbnd[i], out.f[i], out.acc[i]);
+      bulk_atom<1>(c, i, partners(i), nbulk[i], nbnd[i], out.f[i], out.acc[i]);
     else
-      bulk_atom<0>(c, i, firstneigh[i], nbulk[i], nbnd[i], out.f[i], out.acc[i]);
+      bulk_atom<0>(c, i, partners(i), nbulk[i], nbnd[i], out.f[i], out.acc[i]);
   }
 #else
   (void) out;

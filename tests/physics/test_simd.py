@@ -39,6 +39,12 @@ Checks:
   (1e-10: a run boundary rebuilds the neighbour lists, the full one included, and with it
   the split list of the scalar loop: a summation-order change again; measured 6e-15 and
   1.3e-14);
+- the lists the pass orders are made anew whenever they must be: a rerun of a dump (LAMMPS
+  sets neighbor->ncalls back to 0 at each frame), contact paper -> solid with run pre no (the
+  partners change without a new list), and a compute centro/atom whose list is a copy of the
+  pair's full list (it picks its nearest neighbours in the list's order, so the pass then
+  orders a copy of its own): simd yes against simd no, every thermo block, 1e-10 as above.
+  Before the fixes: 0.63, 1.05 and 6.3e-3 (the hostile round of 2026-12-05);
 - options the vector pass does not implement (xsph 0.5, gradient bonet/lok) fall back
   silently: no error or warning, no full list in the log, and thermo identical to simd no
   (the same code path: bit for bit, stronger than round-off)."""
@@ -175,6 +181,49 @@ c.true("continuation: the uninterrupted run has every step", len(cont["full"]["S
 compare("3D rod, simd yes: split run vs uninterrupted", cont["full"], cont["split"])
 compare("3D rod, simd yes: restart (clear, read_restart) vs uninterrupted", cont["full"],
         cont["restart"])
+
+# ---- the lists the vector pass orders (simd_split()): made anew whenever LAMMPS builds the
+# lists, also in a rerun (which sets neighbor->ncalls back to 0 at each frame) and after a
+# change of the contact rule with run pre no; another style sharing the full list (compute
+# centro/atom picks its 12 nearest neighbours in the list's order, ties on a lattice) sees
+# LAMMPS's order. Each was a hostile-round failure: the rerun's forces 7-17x off, the
+# contact pairs of paper -> solid 0.6-0.9 off, the sum of centro/atom 7e-3 off
+
+
+
+
+cases = {
+    "rerun of a dump": ("rod_impact", "",
+                        "dump tr all custom 10 traj.txt id x y z vx vy vz\n"
+                        "dump_modify tr format float %.17g\nrun 60\nundump tr\n"
+                        "rerun traj.txt dump x y z vx vy vz\n", {}),
+    "compute centro/atom sharing the full list": (
+        "rod_impact", "compute cen all centro/atom 12\ncompute rcen all reduce sum c_cen\n",
+        "run 30\nthermo_style custom step pe c_rcen f_int[2]\n"
+        "thermo_modify format float %.17g\nrun 30\n", {}),
+    "contact paper -> solid, run pre no": (
+        "rod_impact", "",
+        "run 40\npair_style esph/solid ${h} dimension ${dim} visc 1.0 1.0 0.1 contact solid "
+        "${pair_extra}\nrun 20 pre no\n", {"contact": "paper"}),
+}
+for k, (name, (ex, extra, tail, vars_)) in enumerate(cases.items()):
+    head, _ = et.example_scene(ex, "run             ${nsteps}", extra)
+    got = {}
+    for s in ("yes", "no"):
+        wd = os.path.join(a.workdir, f"lists{k}.{s}")
+        os.makedirs(wd, exist_ok=True)
+        path = os.path.join(wd, "in.lists")
+        with open(path, "w") as f:
+            f.write(head + tail)
+        got[s] = et.thermo(et.run(a, path, with_pair(dict(rod, **vars_), f"simd {s}"),
+                                   log="log.lists"))
+    nrows = [sum(len(b["Step"]) for b in got[s]) for s in ("yes", "no")]
+    c.true(f"{name}: the same thermo blocks and rows", len(got["yes"]) == len(got["no"]) >= 2
+           and nrows[0] == nrows[1] >= 6, f"{len(got['no'])} blocks, rows {nrows}")
+    worst, col = max(et.worst_difference(bn, by) for bn, by in zip(got["no"], got["yes"]))
+    print(f"INFO {name}: worst relative difference {worst:.3e} in {col}")
+    c.less(f"{name}: simd yes vs simd no, max relative difference", worst, TOL,
+           "summation order and FMA only")
 
 # ---- options outside the vector pass: a silent fallback to the scalar loop
 for k, extra in enumerate(("xsph 0.5", "gradient bonet/lok")):
