@@ -162,11 +162,25 @@ ESPH_AVX512_INLINE __m512d slope(const __m512d *d, __m512d x0, __m512d x1, __m51
    jnum read atom 0's row and are off the returned mask
 ------------------------------------------------------------------------- */
 
+// the first three blocks of the rows of neighbours jlist[from .. to) into the cache
+ESPH_AVX512_INLINE void prefetch_rows(const BulkCtx &c, const int *jlist, int from, int to)
+{
+  for (int e = from; e < to; e++) {
+    const double *row = c.pk + (size_t) (jlist[e] & NEIGHMASK) * c.stride;
+    _mm_prefetch((const char *) row, _MM_HINT_T0);
+    _mm_prefetch((const char *) (row + BLK1), _MM_HINT_T0);
+    _mm_prefetch((const char *) (row + BLK2), _MM_HINT_T0);
+  }
+}
+
 ESPH_AVX512_INLINE __mmask8 load_chunk(const BulkCtx &c, const int *jlist, int jnum, int b, int *js,
                                        __m512d *c0, __m512d *c1)
 {
   const int n = (jnum - b < 8) ? jnum - b : 8;
   const __mmask8 m = (__mmask8) ((1u << n) - 1u);
+  // the next chunk's rows on their way to the cache (the neighbours of a particle span
+  // more rows than the core's own cache holds)
+  prefetch_rows(c, jlist, b + 8, jnum < b + 16 ? jnum : b + 16);
   _mm256_store_si256(
       (__m256i *) js,
       _mm256_and_si256(_mm256_maskz_loadu_epi32(m, jlist + b), _mm256_set1_epi32(NEIGHMASK)));

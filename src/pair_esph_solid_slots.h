@@ -144,10 +144,20 @@ inline bool correction_inverse(const double *m, double rho, int dim, Eigen::Matr
 {
   M << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
   for (int d = dim; d < 3; d++) M(d, d) = rho;
-  const double det = fabs(M.determinant());
+  // the inverse by the cofactors, whose first row gives the determinant
+  const double c00 = M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1);
+  const double c01 = M(1, 2) * M(2, 0) - M(1, 0) * M(2, 2);
+  const double c02 = M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0);
+  const double sdet = M(0, 0) * c00 + M(0, 1) * c01 + M(0, 2) * c02;
+  const double det = fabs(sdet);
   const double scale = rho * M.squaredNorm();
   if (!(det > COND_LO * scale)) return false;
-  Minv = M.inverse();
+  const double id = 1.0 / sdet;
+  Minv << c00 * id, (M(0, 2) * M(2, 1) - M(0, 1) * M(2, 2)) * id,
+      (M(0, 1) * M(1, 2) - M(0, 2) * M(1, 1)) * id, c01 * id,
+      (M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0)) * id, (M(0, 2) * M(1, 0) - M(0, 0) * M(1, 2)) * id,
+      c02 * id, (M(0, 1) * M(2, 0) - M(0, 0) * M(2, 1)) * id,
+      (M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0)) * id;
   beta = (det < COND_HI * scale) ? (det / scale - COND_LO) / (COND_HI - COND_LO) : 1.0;
   return true;
 }
