@@ -20,8 +20,10 @@
    and that need none of the contact logic. With simd yes, on a CPU with
    AVX-512, the scalar loop (pair_esph_solid_loop.cpp) takes only the
    other pairs, from the half list split by simd_split(), and this pass
-   takes the bulk pairs from a full neighbour list: eight neighbours of
-   one particle per vector, read from packed per-atom rows (simd_pack())
+   takes the bulk pairs from a full neighbour list (each particle's
+   neighbours ordered by simd_split(): partners first): eight neighbours
+   of one particle per vector, read from the rows of the hoisted array
+   (hq, laid out in blocks of 8; simd_pack() adds position, mass and body)
    by row loads and a transpose, with only the particle's own sums
    written (no writes to j, so no scatter and no conflicts; every pair is
    computed from both sides, each side with the scalar loop's formulas).
@@ -99,7 +101,7 @@ ESPH_AVX512_INLINE __m512d bcast(double a)
 }
 
 /* ----------------------------------------------------------------------
-   columns c[0..7] of 8 columns [off, off + 8) of the packed rows of atoms
+   columns c[0..7] of 8 columns [off, off + 8) of the rows of atoms
    j[0..7]: eight row loads and an 8 x 8 transpose (24 shuffles), which
    costs less than eight gathers
 ------------------------------------------------------------------------- */
@@ -158,7 +160,7 @@ ESPH_AVX512_INLINE __m512d slope(const __m512d *d, __m512d x0, __m512d x1, __m51
 
 /* ----------------------------------------------------------------------
    the neighbours jlist[b .. b + 8) of a particle: their indices in js and
-   the first two blocks of their packed rows in c0, c1; the lanes past
+   the first two blocks of their rows in c0, c1; the lanes past
    jnum read atom 0's row and are off the returned mask
 ------------------------------------------------------------------------- */
 
