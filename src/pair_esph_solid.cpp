@@ -90,7 +90,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   nforward = nreverse = 0;
   simd_flag = simd_active = 0;
   listfull = nullptr;
-  simd_ncalls = -1;
+  simd_resplit = 1;
   simd_sep = -1;
   simd_bnd = 0;
   simd_own = 0;
@@ -655,7 +655,7 @@ void PairESPHSolid::init_style()
   // (listfull stays: LAMMPS calls init_list() only when it makes new lists, and a run with
   // the same requests keeps the last run's)
   simd_flag = simd_set && simd_cpu() && simd_physics() && simd_fits();
-  simd_ncalls = -1;
+  simd_resplit = 1;
   if (simd_flag) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
 }
 
@@ -1102,7 +1102,7 @@ void PairESPHSolid::pair_pass(int bnd)
   for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
   LoopOut out{0, list->inum, acc, atom->f, atom_contact, &body_tally, 0, 0, 0.0};
   run_pair_loop(bnd, out);
-  if (simd_active) bulk_pass(bnd, out);
+  if (simd_active) bulk_pass(out);
   ncontact_pairs = out.ncontact;
   ntouch_pairs = out.ntouch;
   fcontact = out.fcontact;

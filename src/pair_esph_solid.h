@@ -118,7 +118,7 @@ class PairESPHSolid : public Pair {
   // atom i from simd_own_first[i]) instead of ordered in place
   int simd_own;
   std::vector<int> simd_own_first, simd_own_j;
-  bigint simd_ncalls;
+  int simd_resplit;    // init_style() was called: simd_split() must order the lists anew
   int simd_sep;
   int simd_bnd;    // the boundary-real pairs of one body are the vector pass's too
 
@@ -223,7 +223,7 @@ class PairESPHSolid : public Pair {
   bool simd_ready() const;
   void simd_pack();
   void simd_split(int);
-  void bulk_pass(int, LoopOut &);
+  void bulk_pass(LoopOut &);
   template <int BND> void run_hvar(LoopOut &);
   template <int BND, int HVAR> void run_heat(LoopOut &);
   template <int BND, int HVAR, int HEAT> void run_corr(LoopOut &);

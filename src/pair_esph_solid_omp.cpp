@@ -213,7 +213,7 @@ void PairESPHSolidOMP::pair_pass(int bnd)
                     0,      0.0};
         run_pair_loop(bnd, out);
         // the thread's own particles' bulk pairs: their rows only
-        if (simd_active) bulk_pass(bnd, out);
+        if (simd_active) bulk_pass(out);
         t.ncontact = out.ncontact;
         t.ntouch = out.ntouch;
         t.fcontact = out.fcontact;

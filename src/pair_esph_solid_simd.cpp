@@ -531,14 +531,15 @@ void PairESPHSolid::simd_split(int bnd)
   // cones (their sums are the scalar loop's)
   simd_bnd = bnd && (qcol_n < 0);
   const int inum = list->inum;
-  // made anew when the lists were built for this computation (neighbor->ago is 0 then; a
-  // rerun sets ncalls back to 0 at each frame) or the partners changed (the options, the
-  // contact rule, with run pre no)
+  // made anew when the lists were built for this computation (neighbor->ago is 0 then, also
+  // in a rerun, which sets ncalls back to 0 at each frame), after an init (a run with pre no
+  // keeps the lists, not the bodies or types) or when the partners changed (the options, the
+  // contact rule)
   const int key = sep + 2 * simd_bnd + 4 * contact;
-  if (neighbor->ago > 0 && simd_ncalls == neighbor->ncalls && simd_sep == key &&
+  if (neighbor->ago > 0 && !simd_resplit && simd_sep == key &&
       (int) simd_first.size() == inum + 1 && (int) simd_nbulk.size() == atom->nlocal)
     return;
-  simd_ncalls = neighbor->ncalls;
+  simd_resplit = 0;
   simd_sep = key;
   const double *rmass = state->rmass;
   const int *body = state->body;
@@ -626,9 +627,8 @@ void PairESPHSolid::simd_split(int bnd)
    [iifrom, iito) (the rows of out are theirs), from the full list
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::bulk_pass(int bnd, LoopOut &out)
+void PairESPHSolid::bulk_pass(LoopOut &out)
 {
-  (void) bnd;    // (simd_split() has sorted the lists by it)
 #ifdef ESPH_SIMD_AVX512
   const double *rmass = state->rmass;
   const int *ilist = list->ilist;
