@@ -24,6 +24,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_contact.h"
 #include "esph_state.h"
 #include "esph_strength.h"
 #include "esph_threads.h"
@@ -501,17 +502,7 @@ void FixESPHIntegrate::set_pred_from_state(int i)
 
 void FixESPHIntegrate::rotate_normal(double *ni, const double *spin)
 {
-  const double om[3] = {-spin[2], spin[1], -spin[0]};
-  const double wmag = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
-  const double theta = wmag * dtv;
-  if (theta > 0.0) {
-    const double k[3] = {om[0] / wmag, om[1] / wmag, om[2] / wmag};
-    const double kn = k[0] * ni[0] + k[1] * ni[1] + k[2] * ni[2];
-    const double kxn[3] = {k[1] * ni[2] - k[2] * ni[1], k[2] * ni[0] - k[0] * ni[2],
-                           k[0] * ni[1] - k[1] * ni[0]};
-    const double ct = cos(theta), st = sin(theta);
-    for (int d = 0; d < 3; d++) ni[d] = ni[d] * ct + kxn[d] * st + k[d] * kn * (1.0 - ct);
-  }
+  ESPH::rotate_by_spin(ni, spin, dtv);
 }
 
 /* ----------------------------------------------------------------------

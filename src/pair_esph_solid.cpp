@@ -1041,6 +1041,8 @@ void PairESPHSolid::compute(int eflag, int vflag)
                "Pair esph/solid: internal error, {} values per atom to communicate, {} sized",
                nforward, comm_forward);
   if (bnd && !normals_valid) compute_normals();
+  // (before hoist(), which then also writes the slots only the vector pass reads)
+  simd_active = simd_ready();
   hoist();
   comm_stage = COMM_HOIST;
   comm->forward_comm(this, nforward);
@@ -1056,7 +1058,6 @@ void PairESPHSolid::compute(int eflag, int vflag)
   if (astress_flag) artificial_stress();
 
   if (atom_contact_flag) atom_contact_clear();
-  simd_active = simd_ready();
   if (simd_active) {
     simd_pack();
     simd_split(bnd);

@@ -79,6 +79,10 @@ void PairESPHSolid::hoist()
   const int recon_shift = drec && !recon_keep;
   // the gap forecast of the boundary particles (add_gap_sums())
   const double dt = dt_step;
+  // the vector pass runs in this computation: position, mass and body into the rows too
+  const int pack = simd_active;
+  double **x = atom->x;
+  const int *body = state->body;
 
   recon_keep = 0;
 
@@ -107,6 +111,15 @@ void PairESPHSolid::hoist()
       q[Q_GAP] = state->gap[i];
       q[Q_GAPV] = state->gapv[i];
       q[Q_ENG] = state->eng[i];
+      if (pack) {
+        // the slots only the vector pass reads (simd_pack() fills the ghosts' after the
+        // communication)
+        q[Q_X] = x[i][0];
+        q[Q_X + 1] = x[i][1];
+        q[Q_X + 2] = x[i][2];
+        q[Q_M] = rmass[i];
+        q[Q_BODY] = body ? body[i] : 0.0;
+      }
       if (drec)
         for (int k = 0; k < 6; k++) q[qcol_d + k] = drecu[i][k];
 

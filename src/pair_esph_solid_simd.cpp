@@ -494,20 +494,21 @@ bool PairESPHSolid::simd_ready() const
 }
 
 /* ----------------------------------------------------------------------
-   the slots of the rows (hq) that only the vector pass reads, for every
-   atom (owned and ghost, after the forward communication): position,
-   mass, body
+   the slots of the rows (hq) that only the vector pass reads, for the
+   ghost atoms (hoist() writes the owned atoms' with the rest of their
+   rows): position, mass, body
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::simd_pack()
 {
-  const int nall = atom->nlocal + atom->nghost;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
   double **x = atom->x;
   const double *rmass = state->rmass;
   const int *body = state->body;
   double **const q = hq;
-  ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
-    for (int i = from; i < to; i++) {
+  ESPH::for_chunks(nthreads, nall - nlocal, [=](int from, int to, int) {
+    for (int i = nlocal + from; i < nlocal + to; i++) {
       double *p = q[i];
       p[Q_X] = x[i][0];
       p[Q_X + 1] = x[i][1];

@@ -378,6 +378,36 @@ static void second_moment(const double (*n)[3], const double *w, int k, double *
 // normals; an edge against a face gives the face's normal exactly (the mean normal is
 // tilted towards the edge), in any orientation; two faces or two alike curved surfaces
 // give the mean normal's direction; crossing edges the normal of both edges
+// A boundary normal turned by its spin (eq. 17): rotate_by_spin() against Rodrigues'
+// formula with the unit axis and sin/cos, from the tiny angles of a step (its series
+// branch, theta < 0.01) to a large one (sin/cos branch). Both are exact rotations, so they
+// agree to round-off (1e-15 on a unit vector) and keep the length; no spin, no change.
+TEST(Contact, RotateBySpin)
+{
+  const double n0[3] = {0.48, -0.6, 0.64};          // unit length
+  const double spin[3] = {2.0e4, -1.3e4, 0.7e4};    // W_xy, W_xz, W_yz
+  const double om[3] = {-spin[2], spin[1], -spin[0]};
+  const double wmag = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
+  for (double theta : {1.0e-9, 1.0e-5, 3.0e-3, 0.00999, 0.01001, 0.3, 2.5}) {
+    const double dt = theta / wmag;
+    double n[3] = {n0[0], n0[1], n0[2]};
+    rotate_by_spin(n, spin, dt);
+    const double k[3] = {om[0] / wmag, om[1] / wmag, om[2] / wmag};
+    const double kn = k[0] * n0[0] + k[1] * n0[1] + k[2] * n0[2];
+    const double kxn[3] = {k[1] * n0[2] - k[2] * n0[1], k[2] * n0[0] - k[0] * n0[2],
+                           k[0] * n0[1] - k[1] * n0[0]};
+    for (int d = 0; d < 3; d++) {
+      const double ref = n0[d] * cos(theta) + kxn[d] * sin(theta) + k[d] * kn * (1.0 - cos(theta));
+      EXPECT_NEAR(n[d], ref, 1.0e-15) << "theta " << theta << " component " << d;
+    }
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1.0e-15) << "theta " << theta;
+  }
+  double n[3] = {n0[0], n0[1], n0[2]};
+  const double none[3] = {0.0, 0.0, 0.0};
+  rotate_by_spin(n, none, 1.0e-8);
+  for (int d = 0; d < 3; d++) EXPECT_EQ(n[d], n0[d]);
+}
+
 TEST(Contact, NormalCone)
 {
   const double t = PI / 6.0;
