@@ -56,6 +56,11 @@ static constexpr double SURFACE_OFFSET = 0.05;
 // placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
 // diagonals of simple cubic
 static constexpr double NEAR_SHELL = 1.5;
+// a particle whose nearest neighbours' second moment M has det M < THIN_DET tr^3 and a sum
+// of 2x2 principal minors > THIN_PLANE tr^2 has them in a plane, not on a line (a plane:
+// det 0, minors >= tr^2 / 4; a line: both 0; a lattice body's inside: det tr^3 / 27)
+static constexpr double THIN_DET = 1.0e-6;
+static constexpr double THIN_PLANE = 0.01;
 // the spacing keyword against the median nearest-neighbour distance of the real particles:
 // a warning beyond SPACING_WARN, an error beyond SPACING_ERROR (at twice the spacing the
 // surface detection marks inner layers and puts boundary particles inside the body; at
@@ -494,6 +499,8 @@ void FixESPHBoundary::generate()
 
   std::vector<double> newx, newn, nearest;
   std::vector<int> src;
+  bigint nthin = 0;
+  tagint thin_tag = 0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     const double *xi = atom->x[i];
@@ -527,6 +534,26 @@ void FixESPHBoundary::generate()
             wsum += w;
           }
         }
+    // in 3D a particle whose nearest neighbours of its body all lie in one plane, not on
+    // one line (a chain is the 1D model), is in a sheet one particle thick: its two faces
+    // need two boundary particles, and it makes at most one (none inside the sheet, where
+    // the neighbours balance): counted for a warning
+    if (dim == 3 && nearest.size() >= 9) {
+      double m[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+      for (size_t k = 0; k < nearest.size(); k += 3)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) m[a][b] += nearest[k + a] * nearest[k + b];
+      const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      const double tr = m[0][0] + m[1][1] + m[2][2];
+      const double minors = m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] -
+          m[0][2] * m[2][0] + m[1][1] * m[2][2] - m[1][2] * m[2][1];
+      if (det < THIN_DET * tr * tr * tr && minors > THIN_PLANE * tr * tr) {
+        if (!nthin) thin_tag = atom->tag[i];
+        nthin++;
+      }
+    }
     if (dim == 2) c[2] = 0.0;
     const double off = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / wsum;
     if (off < SURFACE_OFFSET * spacing) continue;
@@ -556,6 +583,19 @@ void FixESPHBoundary::generate()
     src.push_back(i);
   }
 
+  {
+    bigint thin_all;
+    MPI_Allreduce(&nthin, &thin_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    tagint tmine = nthin ? thin_tag : MAXTAGINT, tfirst;
+    MPI_Allreduce(&tmine, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (thin_all > 0 && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix esph/boundary: {} real particles (e.g. atom {}) lie in a layer one "
+                     "particle thick, whose faces get no boundary particles: other bodies meet "
+                     "such a layer at its edges only and pass through its faces; build sheets, "
+                     "rods and plates at least two particles thick",
+                     thin_all, tfirst);
+  }
   if (fit > 0.0) fit_normals(newx, newn, src);
 
   // create the boundary particles; they migrate to their owners at the next setup

@@ -115,6 +115,11 @@ class FixESPHIntegrate : public Fix {
   void set_pred_from_state(int);
   void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
+  void check_group();
+  void check_fixed_dt();
+  double dt_warned;    // the fixed time step last warned about (check_fixed_dt())
+  // the largest cfl factor (and fixed step, in CFL estimates) without a warning
+  static constexpr double CFL_SAFE = 0.5;
   double fingerprint(int);
   void wrapped_position(int, double *);
   bool same_position(int, const double *);

@@ -311,6 +311,22 @@ CASES = [
     ("fi_cfl_above_one", [K("fix_int", " cfl 2")], "error:must be in (0,1]"),
     ("fi_cfl_text", [K("fix_int", " cfl fast")], "error:Expected floating point"),
     ("fi_cfl_on", [K("fix_int", " cfl 0.3")], "runs"),
+    # above 0.5 the integration gains energy (a hostile round: x9 at 0.7, lost atoms at 1.0)
+    ("fi_cfl_unsafe", [K("fix_int", " cfl 0.7")], "warning:is above 0.5"),
+    # a fixed time step of 1.3 CFL estimates (5e-9 is 0.26 of it)
+    ("fi_dt_unsafe", [R("timestep", "timestep 2.5e-8"), R("run", "run 1")],
+     "warning:times the CFL estimate"),
+    # the boundary particles left out of the integration: the bodies would pass through
+    ("fi_group_real_only", [A("fix_bnd", "variable massive atom mass>0.0"),
+                            A("fix_bnd", "group real variable massive"),
+                            A("fix_bnd", "unfix int"), A("fix_bnd", "fix int real esph/integrate")],
+     "error:boundary particles (zero mass"),
+    # the vector of fix esph/integrate before the first run and after the pair style changed
+    # (a hostile round: segmentation fault, then a read of the deleted pair style)
+    ("fi_vector_before_run", [B("run", 'print "V $(f_int[2]) $(f_int[3]) $(f_int[7])"')], "runs"),
+    ("fi_vector_pair_replaced", [A("run", "pair_style zero 1.0"), A("run", "pair_coeff * *"),
+                                 A("run", 'print "V $(f_int[2]) $(f_int[3]) $(f_int[7])"')],
+     "runs"),
     ("fi_dtmax_without_cfl", [K("fix_int", " dtmax 1e-9")], "error:need the cfl keyword"),
     ("fi_dtmax_negative", [K("fix_int", " cfl 0.3 dtmax -1e-9")], "error:dtmax must be > 0"),
     ("fi_dtmin_negative", [K("fix_int", " cfl 0.3 dtmin -1e-9")], "error:dtmin must be > 0"),
@@ -364,6 +380,10 @@ CASES = [
     ("fb_spacing_negative", [R("fix_bnd", FB + "spacing -1e-4")], "error:spacing must be > 0"),
     ("fb_spacing_zero", [R("fix_bnd", FB + "spacing 0")], "error:spacing must be > 0"),
     ("fb_spacing_text", [R("fix_bnd", FB + "spacing fine")], "error:Expected floating point"),
+    # block B one particle thick: its faces get no boundary particles (a hostile round: a
+    # plate flew through a block without a message)
+    ("fb_single_layer", [R("rb", "region rb block 0 0.0001 -0.0002 0.0002 -0.0002 0.0002 "
+                                 "units box")], "warning:one particle thick"),
     ("fb_spacing_double", [R("fix_bnd", FB + "spacing 2e-4")], "error:set spacing to the"),
     ("fb_spacing_half", [R("fix_bnd", FB + "spacing 5e-5")], "error:set spacing to the"),
     ("fb_spacing_20pct_off", [R("fix_bnd", FB + "spacing 1.2e-4")], "warning:median nearest"),
