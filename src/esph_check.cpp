@@ -208,8 +208,12 @@ void ESPHCheck::state(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double h
 /* ---------------------------------------------------------------------- */
 
 void ESPHCheck::pairs(LAMMPS *lmp, ESPHState *st, NeighList *list, double cutsq, double h0,
-                      int kdim)
+                      int kdim, double spacing)
 {
+  const int *body = st->body;
+  const double rover = (spacing > 0.0 && body) ? OVERLAP * spacing : 0.0;
+  double close = rover * rover;
+  tagint close_i = 0, close_j = 0;
   double **x = lmp->atom->x;
   const tagint *tag = lmp->atom->tag;
   const double *rmass = st->rmass;
@@ -228,6 +232,11 @@ void ESPHCheck::pairs(LAMMPS *lmp, ESPHState *st, NeighList *list, double cutsq,
       const double dx[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       if (rsq >= cutsq) continue;
+      if (rover > 0.0 && body[i] != body[j] && rsq < close) {
+        close = rsq;
+        close_i = MIN(tag[i], tag[j]);
+        close_j = MAX(tag[i], tag[j]);
+      }
       const tagint t = MIN(tag[i], tag[j]) > 0 ? MIN(tag[i], tag[j]) : 1;
       if (bad > 0 && t >= bad) continue;
       if (rsq < rmin * rmin) {
@@ -251,6 +260,24 @@ void ESPHCheck::pairs(LAMMPS *lmp, ESPHState *st, NeighList *list, double cutsq,
     }
   }
   first_error(lmp, bad, msg);
+  if (rover == 0.0) return;
+  // the closest pair of real particles of different bodies, if closer than rover
+  struct {
+    double r;
+    int rank;
+  } mine = {close, lmp->comm->me}, all;
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE_INT, MPI_MINLOC, lmp->world);
+  if (!(all.r < rover * rover)) return;
+  tagint pair_tags[2] = {close_i, close_j};
+  MPI_Bcast(pair_tags, 2, MPI_LMP_TAGINT, all.rank, lmp->world);
+  if (lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        "Pair esph/solid: real particles {} and {} of different bodies are {:.3g} "
+                        "spacings apart at the start of the run: the bodies overlap (touching "
+                        "bodies are a spacing apart) and push apart from a state no contact "
+                        "reaches, or at rest stay inside each other; build them apart or "
+                        "touching",
+                        pair_tags[0], pair_tags[1], sqrt(all.r) / spacing);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -64,8 +64,11 @@ namespace ESPHCheck {
 
   // pass over the half neighbour list: coincident real particles (closer than
   // COINCIDENT x h0), and with a kernel dimension below the box dimension,
-  // neighbouring real particles off the x axis (dimension 1) or the xy plane (2)
-  void pairs(LAMMPS *lmp, ESPHState *state, NeighList *list, double cutsq, double h0, int kdim);
+  // neighbouring real particles off the x axis (dimension 1) or the xy plane (2); with
+  // the particle spacing of fix esph/boundary (> 0), a warning for real particles of
+  // different bodies closer than OVERLAP x spacing (overlapping bodies)
+  void pairs(LAMMPS *lmp, ESPHState *state, NeighList *list, double cutsq, double h0, int kdim,
+             double spacing);
 
   // with a contact rule and more than one body: every body with real particles
   // needs boundary particles
@@ -105,6 +108,9 @@ namespace ESPHCheck {
   static constexpr double VOLUME_OFF = 3.0;
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
+  // touching bodies are a spacing apart, bodies that overlap by half a spacing or more
+  // have particles within 0.5 spacings (a lattice) or closer
+  static constexpr double OVERLAP = 0.6;    // in units of the particle spacing
   static constexpr double MAX_RATIO = 3.0;
   static constexpr double ISOLATED = -2.0;
   static constexpr double H_WARN = 3.0;      // in units of the particle spacing

@@ -33,8 +33,10 @@
 #include "esph_state.h"
 #include "force.h"
 #include "group.h"
+#include "math_const.h"
 #include "memory.h"
 #include "modify.h"
+#include "region.h"
 
 #include <Eigen/Dense>
 
@@ -45,6 +47,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 using namespace FixConst;
 
 enum { GENERATE, GIVEN };
@@ -61,6 +64,12 @@ static constexpr double NEAR_SHELL = 1.5;
 // det 0, minors >= tr^2 / 4; a line: both 0; a lattice body's inside: det tr^3 / 27)
 static constexpr double THIN_DET = 1.0e-6;
 static constexpr double THIN_PLANE = 0.01;
+// keyword region: the surface points searched within this many spacings
+static constexpr double REGION_REACH = 3.0;
+// ... a boundary particle closer than REGION_ON spacings to the surface is looked at from
+// REGION_NUDGE spacings out along its own normal
+static constexpr double REGION_ON = 1.0e-6;
+static constexpr double REGION_NUDGE = 0.25;
 // the spacing keyword against the median nearest-neighbour distance of the real particles:
 // a warning beyond SPACING_WARN, an error beyond SPACING_ERROR (at twice the spacing the
 // surface detection marks inner layers and puts boundary particles inside the body; at
@@ -125,6 +134,18 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
                    "Fix esph/boundary fit must be 0 (off) or in [2,16] spacings, got {}",
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "region") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary region", error);
+      Region *region = domain->get_region_by_id(arg[iarg + 1]);
+      if (!region)
+        error->all(FLERR, iarg + 1, "Fix esph/boundary region {} does not exist", arg[iarg + 1]);
+      if (region->dynamic_check())
+        error->all(FLERR, iarg + 1,
+                   "Fix esph/boundary region {} must be static (no move, rotate or variable "
+                   "shape): its surface gives the normals when the boundary particles are made",
+                   arg[iarg + 1]);
+      region_ids.emplace_back(arg[iarg + 1]);
+      iarg += 2;
     } else if (strcmp(arg[iarg], "given") == 0) {
       mode = GIVEN;
       iarg += 1;
@@ -134,6 +155,10 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   }
   if (mode == GENERATE && spacing == 0.0)
     error->all(FLERR, "Fix esph/boundary needs the particle spacing: spacing <value>");
+  if (mode == GIVEN && !region_ids.empty())
+    error->all(FLERR,
+               "Fix esph/boundary region sets the normals of the boundary particles it makes; "
+               "with given they come with the particles (d2_esph_n): drop one of the two");
 }
 
 /* ----------------------------------------------------------------------
@@ -597,6 +622,7 @@ void FixESPHBoundary::generate()
                      thin_all, tfirst);
   }
   if (fit > 0.0) fit_normals(newx, newn, src);
+  if (!region_ids.empty()) region_normals(newx, newn, src);
 
   // create the boundary particles; they migrate to their owners at the next setup
   const int nprev = atom->nlocal;
@@ -692,6 +718,98 @@ std::vector<double> FixESPHBoundary::halo_exchange(const std::vector<double> &mi
   MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
                 rdispl.data(), MPI_DOUBLE, world);
   return rbuf;
+}
+
+/* ----------------------------------------------------------------------
+   keyword region: the normal of a boundary particle whose real particle
+   lies in one of the regions (the first that holds it) is the outward
+   normal of that region's surface at the surface point nearest to the
+   boundary particle, i.e. the gradient of the distance to the surface:
+   radial for a sphere, a face's normal beside it, rounded over an edge or
+   a corner. The positions stay the ones generate() made. A boundary
+   particle with no surface point of its region within 3 spacings keeps
+   its normal; those, and those more than a spacing from the surface, are
+   counted for a warning (the region does not describe that body's surface)
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<double> &bn,
+                                     const std::vector<int> &src)
+{
+  std::vector<Region *> regions;
+  for (const auto &id : region_ids) {
+    Region *region = domain->get_region_by_id(id);
+    if (!region) error->all(FLERR, "Fix esph/boundary region {} does not exist any more", id);
+    region->prematch();
+    regions.push_back(region);
+  }
+  double **x = atom->x;
+  const double cutoff = REGION_REACH * spacing;
+  bigint nset = 0, nfar = 0, nnone = 0;
+  double maxturn = 0.0;
+  const int n = src.size();
+  for (int k = 0; k < n; k++) {
+    const double *xs = x[src[k]];
+    Region *region = nullptr;
+    for (auto *r : regions)
+      if (r->match(xs[0], xs[1], xs[2])) {
+        region = r;
+        break;
+      }
+    if (!region) continue;
+    // the nearest surface point: from outside the region, or from inside (a boundary
+    // particle of a staircase can lie inside the region it was cut from); a particle on
+    // the surface itself (a lattice face, e.g. of touching blocks) is looked at from a
+    // quarter spacing out along its own normal, where the nearest point is the same
+    int best = -1;
+    double sign = 1.0;
+    for (int attempt = 0; attempt < 2 && best < 0; attempt++) {
+      const double out = attempt ? REGION_NUDGE * spacing : 0.0;
+      double p[3];
+      for (int d = 0; d < 3; d++) p[d] = bx[3 * k + d] + out * bn[3 * k + d];
+      sign = 1.0;
+      int nc = region->match(p[0], p[1], p[2]) ? 0 : region->surface_exterior(p, cutoff);
+      if (nc == 0) {
+        for (int d = 0; d < 3; d++) p[d] = bx[3 * k + d] + out * bn[3 * k + d];
+        nc = region->surface_interior(p, cutoff);
+        sign = -1.0;
+      }
+      for (int c = 0; c < nc; c++)
+        if (best < 0 || region->contact[c].r < region->contact[best].r) best = c;
+      // on the surface: the direction is undefined there, look again from outside
+      if (best >= 0 && region->contact[best].r <= REGION_ON * spacing) best = -1;
+    }
+    if (best < 0) {
+      nnone++;
+      continue;
+    }
+    const auto &ct = region->contact[best];
+    const double len = sqrt(ct.delx * ct.delx + ct.dely * ct.dely + ct.delz * ct.delz);
+    const double nr[3] = {sign * ct.delx / len, sign * ct.dely / len, sign * ct.delz / len};
+    double *nk = &bn[3 * k];
+    const double dot = nk[0] * nr[0] + nk[1] * nr[1] + nk[2] * nr[2];
+    maxturn = MAX(maxturn, acos(MAX(-1.0, MIN(1.0, dot))));
+    for (int d = 0; d < 3; d++) nk[d] = nr[d];
+    nset++;
+    if (ct.r > spacing) nfar++;
+  }
+  bigint loc[3] = {nset, nfar, nnone}, all[3];
+  MPI_Allreduce(loc, all, 3, MPI_LMP_BIGINT, MPI_SUM, world);
+  double turn;
+  MPI_Allreduce(&maxturn, &turn, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me == 0) {
+    utils::logmesg(lmp,
+                   "Fix esph/boundary: {} boundary particles took the normals of region(s) {} "
+                   "(turned by up to {:.3g} degrees)\n",
+                   all[0], utils::join_words(region_ids, " "), turn * 180.0 / MY_PI);
+    if (all[1] > 0 || all[2] > 0)
+      error->warning(FLERR,
+                     "Fix esph/boundary: {} boundary particles lie more than a spacing from the "
+                     "surface of the region that holds their body particle, and {} have none of "
+                     "it within {} spacings (they keep their own normals): a region must be the "
+                     "one the body was created from, where the body still is, and a body cut by "
+                     "a periodic boundary needs a box a whole number of spacings long",
+                     all[1], all[2], REGION_REACH);
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -23,6 +23,7 @@ FixStyle(esph/boundary,FixESPHBoundary);
 #include "fix.h"
 
 #include <map>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -49,9 +50,12 @@ class FixESPHBoundary : public Fix {
   // real particles per body the boundary particles were generated (or found) for
   std::map<int, bigint> made_for;
   bigint reused;    // boundary particles found at the definition and used (none made)
+  // regions whose surfaces give the normals of the boundary particles of their bodies
+  std::vector<std::string> region_ids;
 
   void generate();
   void fit_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
+  void region_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
   std::vector<double> halo_exchange(const std::vector<double> &, int, const double *,
                                     const double *, double);
 };

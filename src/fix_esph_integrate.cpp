@@ -221,6 +221,7 @@ void FixESPHIntegrate::init()
                    "would pump energy): the prediction uses the last rates; leave the keyword "
                    "out or use contact solid");
   check_group();
+  check_average_forces();
   if (modify->get_fix_by_style("^esph/integrate").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -353,6 +354,28 @@ void FixESPHIntegrate::check_group()
              "bodies, which then meet no contact; use a group that holds them too (e.g. all, "
              "or the body's group defined before fix esph/boundary)",
              group->names[igroup], outall, firstall);
+}
+
+/* ----------------------------------------------------------------------
+   fix aveforce on a group with boundary particles: it shares the force among
+   all atoms of its group, and the share of the zero-mass boundary particles
+   is lost (they move with their bodies, not by forces)
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::check_average_forces()
+{
+  for (const auto &f : modify->get_fix_by_style("^aveforce")) {
+    bigint n = 0, nall;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & f->groupbit) && state->rmass[i] == 0.0) n++;
+    MPI_Allreduce(&n, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (nall > 0 && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix {} ({}) acts on {} boundary particles (zero mass) of group {}: their "
+                     "share of its force is lost, as they move with their bodies; use a group of "
+                     "the real particles (mass > 0) only",
+                     f->id, f->style, nall, group->names[f->igroup]);
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -116,6 +116,7 @@ class FixESPHIntegrate : public Fix {
   void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
   void check_group();
+  void check_average_forces();
   void check_fixed_dt();
   double dt_warned;    // the fixed time step last warned about (check_fixed_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning

@@ -843,7 +843,8 @@ void PairESPHSolid::setup()
   }
   // the state the run starts from, and the arrangement of the particles (one pass each)
   ESPHCheck::state(lmp, state, eos, cut_global / KERNEL_SUPPORT, units);
-  ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim);
+  ESPHCheck::pairs(lmp, state, list, cut_global * cut_global, h0, dim,
+                   contact != CONTACT_OFF ? boundary_spacing() : 0.0);
   {
     const double spacing = boundary_spacing();
     ESPHCheck::volumes(lmp, state, eos, spacing, dim);

@@ -380,6 +380,33 @@ CASES = [
     ("fb_spacing_negative", [R("fix_bnd", FB + "spacing -1e-4")], "error:spacing must be > 0"),
     ("fb_spacing_zero", [R("fix_bnd", FB + "spacing 0")], "error:spacing must be > 0"),
     ("fb_spacing_text", [R("fix_bnd", FB + "spacing fine")], "error:Expected floating point"),
+    # normals from the regions the blocks were cut from: the blocks' faces (the contact faces'
+    # boundary particles lie on the regions' surfaces), rounded edges; no warning
+    ("fb_region", [K("fix_bnd", " region ra region rb")], "runs"),
+    ("fb_region_np2", [K("fix_bnd", " region ra region rb")], "runs", 2),
+    ("fb_region_missing", [K("fix_bnd", " region")], "error:missing argument"),
+    ("fb_region_unknown", [K("fix_bnd", " region nowhere")], "error:region nowhere does not exist"),
+    ("fb_region_dynamic", [A("rb", "variable zero equal 0.0"),
+                           A("rb", "region mv block 0 0.0004 -0.0002 0.0002 -0.0002 0.0002 "
+                                   "move v_zero NULL NULL units box"),
+                           K("fix_bnd", " region mv")],
+     "error:must be static"),
+    ("fb_region_given", [R("fix_bnd", "fix bnd all esph/boundary given region ra")],
+     "error:drop one of the two"),
+    # a region that is not the body's: its surface is far from the boundary particles
+    ("fb_region_other", [A("rb", "region big block -0.0006 0 -0.0004 0.0004 -0.0004 0.0004 "
+                                  "units box"), K("fix_bnd", " region big")],
+     "warning:a region must be the one the body was created from"),
+    # block B half a spacing inside block A (a hostile round: at rest they stayed inside each
+    # other, moving they gained 2.4 % energy, without a message)
+    ("fb_bodies_overlap", [A("gb", "displace_atoms b move -0.00005 0 0 units box")],
+     "warning:the bodies overlap"),
+    # fix aveforce on a group with boundary particles loses their share (momentum +44 %)
+    ("fi_aveforce_boundary", [A("velocity", "fix avef all aveforce 0.0 0.0 NULL")],
+     "warning:share of its force is lost"),
+    ("fi_aveforce_real", [A("velocity", "variable massive atom mass>0.0"),
+                          A("velocity", "group real variable massive"),
+                          A("velocity", "fix avef real aveforce 0.0 0.0 NULL")], "runs"),
     # block B one particle thick: its faces get no boundary particles (a hostile round: a
     # plate flew through a block without a message)
     ("fb_single_layer", [R("rb", "region rb block 0 0.0001 -0.0002 0.0002 -0.0002 0.0002 "
