@@ -120,7 +120,7 @@ class FixESPHIntegrate : public Fix {
   void check_fixed_dt();
   double dt_warned;    // the fixed time step last warned about (check_fixed_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning
-  static constexpr double CFL_SAFE = 0.5;
+  static constexpr double CFL_SAFE = 0.6;
   double fingerprint(int);
   void wrapped_position(int, double *);
   bool same_position(int, const double *);
