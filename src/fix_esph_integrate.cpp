@@ -24,6 +24,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_state.h"
 #include "esph_strength.h"
@@ -322,20 +323,7 @@ void FixESPHIntegrate::check_group()
   std::vector<int> mine;
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && state->rmass[i] > 0.0) mine.push_back(state->body[i]);
-  std::sort(mine.begin(), mine.end());
-  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-  int n = mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<int> bodies(total);
-  MPI_Allgatherv(mine.data(), n, MPI_INT, bodies.data(), counts.data(), displs.data(), MPI_INT,
-                 world);
-  std::sort(bodies.begin(), bodies.end());
+  const std::vector<int> bodies = ESPHCheck::global_set(lmp, mine);
   bigint out = 0, outall;
   tagint first = 0, firstall;
   for (int i = 0; i < nlocal; i++)
@@ -379,14 +367,26 @@ void FixESPHIntegrate::check_average_forces()
 }
 
 /* ----------------------------------------------------------------------
+   the CFL time step estimate of the last force computation of pair p (all
+   ranks; 0 without a pair style)
+------------------------------------------------------------------------- */
+
+double FixESPHIntegrate::cfl_estimate(const PairESPHSolid *p) const
+{
+  const double mine = p ? p->dt_cfl : 0.0;
+  double dt;
+  MPI_Allreduce(&mine, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  return dt;
+}
+
+/* ----------------------------------------------------------------------
    a fixed time step (no cfl keyword) larger than CFL_SAFE times the CFL
    estimate of the setup computation gets a warning, once per size
 ------------------------------------------------------------------------- */
 
 void FixESPHIntegrate::check_fixed_dt()
 {
-  double dt;
-  MPI_Allreduce(&pair->dt_cfl, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  const double dt = cfl_estimate(pair);
   if (dt >= 1.0e299 || dt <= 0.0) return;    // no real particles
   const double ratio = update->dt / dt;
   if (ratio > CFL_SAFE && update->dt != dt_warned && comm->me == 0)
@@ -899,8 +899,7 @@ void FixESPHIntegrate::end_of_step()
 
 void FixESPHIntegrate::adapt_dt()
 {
-  double dt;
-  MPI_Allreduce(&pair->dt_cfl, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  double dt = cfl_estimate(pair);
   if (dt >= 1.0e299) return;    // no real particles
   dt *= cfl;
   if (dtmin > 0.0) dt = MAX(dt, dtmin);
@@ -943,12 +942,7 @@ double FixESPHIntegrate::compute_vector(int n)
     MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
     return (double) total;
   }
-  if (n == 2) {
-    double dt;
-    const double mine = pnow ? pnow->dt_cfl : 0.0;
-    MPI_Allreduce(&mine, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
-    return dt;
-  }
+  if (n == 2) return cfl_estimate(pnow);
   if (n == 3) return contact_all.tfirst;
   if (n == 4) return contact_all.tlast;
   if (n == 5) return (double) contact_all.nepisodes;

@@ -118,6 +118,7 @@ class FixESPHIntegrate : public Fix {
   void check_group();
   void check_average_forces();
   void check_fixed_dt();
+  double cfl_estimate(const class PairESPHSolid *) const;
   double dt_warned;    // the fixed time step last warned about (check_fixed_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning
   static constexpr double CFL_SAFE = 0.6;
