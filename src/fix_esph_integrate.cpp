@@ -656,17 +656,25 @@ void FixESPHIntegrate::final_integrate()
   double **v = atom->v;
   double **f = atom->f;
   const int *mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const int nlocal = atom->nlocal;
+  int nint = nlocal;
+  if (igroup == atom->firstgroup) nint = atom->nfirst;
 
   const double *rmass = state->rmass;
   double *e = state->e;
   const double *de = pair->de;
-  double **bvel = pair->bvel;
+  double **bvel = pair->bvel, **bspin = pair->bspin, **n = state->n;
 
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
-      if (!(mask[i] & groupbit)) continue;
+      if (!(i < nint && (mask[i] & groupbit)) || !move) {
+        // a boundary particle that another fix moves (fix move on a rigid body, or move no)
+        // or that stays at rest turns with its body's spin at the end of the step, from
+        // the velocities that fix has set: exact for a rigid rotation, nothing at rest or
+        // in translation
+        if (rmass[i] == 0.0) rotate_normal(n[i], bspin[i]);
+        if (!(i < nint && (mask[i] & groupbit))) continue;
+      }
       if (rmass[i] > 0.0) {
         if (move) {
           const double dtfm = dtf / rmass[i];

@@ -67,6 +67,8 @@ void PairESPHSolid::hoist()
   const double *rmass = state->rmass;
   // inside a step the integrator has predicted the state at its end
   double **pred = pred_valid ? fix_int->pred : nullptr;
+  const int *mask = atom->mask;
+  const int intbit = fix_int->groupbit;
   const double hlimit = cut_global / KERNEL_SUPPORT * (1.0 + 1.0e-12);
   // internal units from here on: sigma/rho^2, e and c (esph_units.h)
   const double ein = units.energy_in, pin = units.pressure_in;
@@ -100,8 +102,10 @@ void PairESPHSolid::hoist()
         for (int k = 0; k < 6; k++) drecu[i][k] = drec[i][k];
       double *q = hq[i];
       const double *p = pred ? pred[i] : nullptr;
-      // with fix esph/integrate move no another fix has set v at the end of the step
-      const double *vi = (p && fix_int->move) ? p + FixESPHIntegrate::P_V : v[i];
+      // the velocity at the end of the step: predicted by fix esph/integrate, or set by
+      // another fix (move no, or a body outside its group moved by e.g. fix move)
+      const double *vi = (p && fix_int->move && (mask[i] & intbit)) ? p + FixESPHIntegrate::P_V
+                                                                    : v[i];
       q[Q_V] = vi[0];
       q[Q_V + 1] = vi[1];
       q[Q_V + 2] = vi[2];
