@@ -664,15 +664,24 @@ void FixESPHIntegrate::final_integrate()
   double *e = state->e;
   const double *de = pair->de;
   double **bvel = pair->bvel, **bspin = pair->bspin, **n = state->n;
+  double **x = atom->x;
+  // per chunk: the first boundary particle that another fix moved to a non-finite place
+  std::vector<int> nonfinite(nthreads, -1);
+  int *const nonfinite_t = nonfinite.data();
 
-  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+  ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     for (int i = from; i < to; i++) {
       if (!(i < nint && (mask[i] & groupbit)) || !move) {
         // a boundary particle that another fix moves (fix move on a rigid body, or move no)
         // or that stays at rest turns with its body's spin at the end of the step, from
         // the velocities that fix has set: exact for a rigid rotation, nothing at rest or
         // in translation
-        if (rmass[i] == 0.0) rotate_normal(n[i], bspin[i]);
+        if (rmass[i] == 0.0) {
+          rotate_normal(n[i], bspin[i]);
+          if (nonfinite_t[tid] < 0 &&
+              !(std::isfinite(x[i][0]) && std::isfinite(x[i][1]) && std::isfinite(x[i][2])))
+            nonfinite_t[tid] = i;
+        }
         if (!(i < nint && (mask[i] & groupbit))) continue;
       }
       if (rmass[i] > 0.0) {
@@ -697,6 +706,20 @@ void FixESPHIntegrate::final_integrate()
       }
     }
   });
+  // a fix that integrates forces (fix nve, fix move variable with NULL displacement and
+  // velocity) divides by the zero mass of a boundary particle: caught in the step it happens
+  for (int t = 0; t < nthreads; t++)
+    if (nonfinite[t] >= 0) {
+      const int i = nonfinite[t];
+      error->one(FLERR, Error::NOLASTLINE,
+                 "Boundary particle {} (zero mass) of body {} has a non-finite position after "
+                 "step {}: a fix other than esph/integrate {} moves it by integrating forces, "
+                 "which divides by its zero mass (e.g. fix move variable with NULL displacement "
+                 "and velocity, or fix nve); prescribe the motion (fix move linear, wiggle, "
+                 "rotate, or variable with displacement variables) for the whole body, boundary "
+                 "particles included",
+                 atom->tag[i], state->body ? state->body[i] : 0, update->ntimestep, id);
+    }
   // force computations outside a step see the state as is, unless a run continues
   pair->pred_valid = 0;
   havepred = 1;

@@ -296,6 +296,17 @@ CASES = [
      [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
       R("fix_int", "fix int a esph/integrate"), A("velocity", "velocity b set -20 0 0 units box"),
       A("velocity", "fix mv b move linear -20 0 0")], "runs"),
+    # fix move variable with NULL displacement and velocity integrates f / m: infinite for the
+    # zero-mass boundary particles in its group (they went NaN and the contact vanished)
+    ("pc_rigid_move_variable_null",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"),
+      A("velocity", "fix mv b move variable NULL NULL NULL NULL NULL NULL units box")],
+     "error:has a non-finite position after step", 2),
+    ("pc_rigid_move_rotate",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"),
+      A("velocity", "fix mv b move rotate 0.0002 0 0 0 0 1 1e-4 units box")], "runs"),
     ("pc_rigid_contact_off", [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
                               R("fix_int", "fix int a esph/integrate"), K("pair", " contact off")],
      "error:need a contact rule"),
