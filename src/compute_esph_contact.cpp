@@ -72,7 +72,9 @@ int ComputeESPHContact::lock_length()
    columns: 1, 2 bodies I < J; 3 touching pairs, 4 interacting pairs,
    5 normal force now; 6 impulse so far; 7 first touch, 8 end of the first
    contact episode (-1 before), 9 its duration (-1 before it ends once),
-   10 number of episodes, 11 peak normal force
+   10 number of episodes, 11 peak normal force; 12-14 net force on body I
+   from J now (vector, friction included), 15-17 its time integral (the
+   momentum J gave I)
 ------------------------------------------------------------------------- */
 
 void ComputeESPHContact::compute_array()
@@ -102,5 +104,9 @@ void ComputeESPHContact::compute_array()
     a[8] = (r.tlast >= 0.0 && r.tfirst >= 0.0) ? r.tlast - r.tfirst : -1.0;
     a[9] = r.nepisodes;
     a[10] = r.fpeak;
+    for (int d = 0; d < 3; d++) {
+      a[11 + d] = r.fnet[d];
+      a[14 + d] = r.jnet[d];
+    }
   }
 }

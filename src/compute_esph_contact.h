@@ -32,7 +32,7 @@ class ComputeESPHContact : public Compute {
   void compute_array() override;
   int lock_length() override;
 
-  static constexpr int NCOLS = 11;
+  static constexpr int NCOLS = 17;
 
  private:
   class FixESPHIntegrate *fix_int;

@@ -30,9 +30,10 @@
 // particle has another body's surface within its kernel.
 //
 // Common normal: nc ~ w_i n_i - w_j n_j (coherence-weighted, see contact_normal), pointing
-// from i into the other body; under the solid rule by default (contact/normal cone) turned
-// into the direction common to both surfaces' cones of normals (contact_normal_cone), so
-// that an edge meeting a face pushes along the face's normal.
+// from i into the other body; with contact/normal cone (an option of the solid rule; the
+// default is this mean normal) turned into the direction common to both surfaces' cones of
+// normals (contact_normal_cone), so that an edge meeting a face pushes along the face's
+// normal.
 // Rules:
 //   PAPER : interact iff the particles approach along nc, (vij.nc)(xij.nc) < 0 (eq. 31).
 //   SOLID : (default) the cross-body coupling is weighted by contact_pair_weight(), the
@@ -83,7 +84,7 @@ inline void contact_normal(const double *ni, const double *nj, const double *xij
   nc[2] = a2 * inv;
 }
 
-/* contact/normal cone (the default under the solid rule): the common normal as the
+/* contact/normal cone (an option of the solid rule): the common normal as the
    direction that both surfaces admit. The cone of a real particle's surface is the second
    moment of its own body's boundary normals n_k around it, S = sum_k W_ik n_k n_k^T /
    sum_k W_ik (Voigt xx yy zz xy xz yz, trace 1), with every eigenvector counted fully
@@ -304,25 +305,38 @@ inline bool contact_approach(double vn, double xn)
    an interacting pair is a touching one); it lasts while F exceeds
    FORCE_FRACTION of its peak so far. An episode is a period with F above that level;
    interruptions of up to HOLD_STEPS steps belong to the same episode; tlast is the end
-   of the first episode. The impulse is the time integral of F. */
+   of the first episode. The impulse is the time integral of F. fnet is the net force
+   (vector) on the body of the smaller ID from the other, friction included, and jnet its
+   time integral by the trapezoid of the step (as velocity Verlet kicks): the momentum the
+   other body gave it, exactly (F sums the magnitudes of the normal pair forces, which at
+   edges and corners point in different directions). */
 
 struct ContactRecord {
   static constexpr int HOLD_STEPS = 10;
   static constexpr double FORCE_FRACTION = 0.01;
-  static constexpr int NVALUES = 10;    // values packed by pack()/unpack()
+  static constexpr int NVALUES = 16;    // values packed by pack()/unpack()
+  static constexpr int NTALLY = 6;      // per-step sums: touching, interacting, F, fnet
 
   double tfirst = -1.0, tlast = -1.0;
   double force = 0.0, fpeak = 0.0, impulse = 0.0;
   double ntouch = 0.0, nint = 0.0;
   int nepisodes = 0, quiet = 0;
   double tlatest = -1.0;    // end of the last step with F above the level
+  double fnet[3] = {0.0, 0.0, 0.0}, jnet[3] = {0.0, 0.0, 0.0};
 
-  void update(double t, double dt, double touch, double inter, double f)
+  // s: the step's sums (NTALLY values: touching, interacting pairs, F, fnet)
+  void update(double t, double dt, const double *s)
   {
+    const double touch = s[0], inter = s[1], f = s[2];
     ntouch = touch;
     nint = inter;
     force = f;
     impulse += f * dt;
+    // the momentum a velocity-Verlet step hands on: the mean of the forces at its ends
+    for (int a = 0; a < 3; a++) {
+      jnet[a] += 0.5 * (fnet[a] + s[3 + a]) * dt;
+      fnet[a] = s[3 + a];
+    }
     if (tfirst < 0.0 && touch > 0.0) tfirst = t - dt;
     if (f > fpeak) fpeak = f;
     if (f > 0.0 && f >= FORCE_FRACTION * fpeak) {
@@ -334,11 +348,19 @@ struct ContactRecord {
       quiet++;
     }
   }
+  // the state of a force computation outside a step (setup): no history
+  void now(const double *s)
+  {
+    ntouch = s[0];
+    nint = s[1];
+    force = s[2];
+    for (int a = 0; a < 3; a++) fnet[a] = s[3 + a];
+  }
   void pack(double *buf) const
   {
-    const double v[NVALUES] = {tfirst,         tlast,  force, fpeak,
-                               impulse,        ntouch, nint,  (double) nepisodes,
-                               (double) quiet, tlatest};
+    const double v[NVALUES] = {
+        tfirst,         tlast,   force,   fpeak,   impulse, ntouch,  nint,    (double) nepisodes,
+        (double) quiet, tlatest, fnet[0], fnet[1], fnet[2], jnet[0], jnet[1], jnet[2]};
     for (int k = 0; k < NVALUES; k++) buf[k] = v[k];
   }
   void unpack(const double *buf)
@@ -353,6 +375,10 @@ struct ContactRecord {
     nepisodes = (int) buf[7];
     quiet = (int) buf[8];
     tlatest = buf[9];
+    for (int a = 0; a < 3; a++) {
+      fnet[a] = buf[10 + a];
+      jnet[a] = buf[13 + a];
+    }
   }
 };
 

@@ -56,8 +56,9 @@ static inline double advance_alpha(double a, double rate, double dt, double amin
 {
   return MIN(MAX(a + dt * rate, amin), amax);
 }
-// (changed with the per-atom prediction's layout: P_PREV and the step between the rates)
-static constexpr double RESTART_LAYOUT = 2026120402.0;
+// (changed with the per-atom prediction's layout, and with the contact records: 2026-12-05,
+// the net force and impulse per pair of bodies)
+static constexpr double RESTART_LAYOUT = 2026120501.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -85,6 +86,8 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   dt_used = 0.0;
   dt_prev = 0.0;
   dt_warned = 0.0;
+  dtmin_warned = 0.0;
+  spin_watch_on = 0;
   extrapolate = 1;
   extrapolate_set = 0;
   extrap_on = 0;
@@ -301,11 +304,22 @@ void FixESPHIntegrate::setup(int /*vflag*/)
     double total[3];
     contact_tallies(total);
     contact_all.force = total[2];
+    // the rows of the body pairs that touch now, with their forces (the start of the net
+    // impulse's first step)
+    update_body_pairs(0.0, 1);
   }
   if (cfl > 0.0)
     adapt_dt();
   else
     check_fixed_dt();
+
+  // the angular momentum of free bodies, where the pair forces do not keep it and nothing
+  // else may exert torques (esph_spin_watch.h)
+  spin_watch_on = pair->nboundary > 0 && move && domain->dimension > 1 &&
+      (pair->correct_flag == PairESPHSolid::CORRECT_PLAIN ||
+       pair->correct_flag == PairESPHSolid::CORRECT_RATE) &&
+      modify->n_post_force_any == 0;
+  if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
 }
 
 /* ----------------------------------------------------------------------
@@ -733,8 +747,11 @@ void FixESPHIntegrate::final_integrate()
     double total[3];
     contact_tallies(total);
     const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-    contact_all.update(t, update->dt, total[0], total[1], total[2]);
+    // (no net force for all bodies together: it is per pair of bodies)
+    const double sums[ESPH::ContactRecord::NTALLY] = {total[0], total[1], total[2], 0.0, 0.0, 0.0};
+    contact_all.update(t, update->dt, sums);
     update_body_pairs(t);
+    if (spin_watch_on) spin_watch.step(lmp, state, groupbit, update->ntimestep, id);
   }
 }
 
@@ -755,7 +772,7 @@ void FixESPHIntegrate::contact_tallies(double *total)
    join the (sorted, global) list; then one sum over ranks
 ------------------------------------------------------------------------- */
 
-void FixESPHIntegrate::update_body_pairs(double t)
+void FixESPHIntegrate::update_body_pairs(double t, int setup)
 {
   const auto &tally = pair->body_tally;
   std::vector<int> fresh;
@@ -787,15 +804,24 @@ void FixESPHIntegrate::update_body_pairs(double t)
   }
   const int np = body_pairs.size();
   if (np == 0) return;
-  std::vector<double> local(3 * np, 0.0), total(3 * np);
+  constexpr int NT = ESPH::ContactRecord::NTALLY;
+  static_assert(PairESPHSolid::NTALLY == NT, "the pair style's body tallies feed the records");
+  std::vector<double> local(NT * np, 0.0), total(NT * np);
   for (const auto &kv : tally) {
     const auto pos =
         std::lower_bound(body_pairs.begin(), body_pairs.end(), kv.first) - body_pairs.begin();
-    for (int k = 0; k < 3; k++) local[3 * pos + k] = kv.second[k];
+    for (int k = 0; k < NT; k++) local[NT * pos + k] = kv.second[k];
   }
-  MPI_Allreduce(local.data(), total.data(), 3 * np, MPI_DOUBLE, MPI_SUM, world);
-  for (int p = 0; p < np; p++)
-    body_records[p].update(t, update->dt, total[3 * p], total[3 * p + 1], total[3 * p + 2]);
+  MPI_Allreduce(local.data(), total.data(), NT * np, MPI_DOUBLE, MPI_SUM, world);
+  for (int p = 0; p < np; p++) {
+    if (setup) {
+      body_records[p].now(total.data() + NT * p);
+      continue;
+    }
+    body_records[p].update(t, update->dt, total.data() + NT * p);
+    if (spin_watch_on && (total[NT * p] > 0.0 || total[NT * p + 1] > 0.0))
+      spin_watch.touched(body_pairs[p].first, body_pairs[p].second);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -932,6 +958,18 @@ void FixESPHIntegrate::adapt_dt()
 {
   double dt = cfl_estimate(pair);
   if (dt >= 1.0e299) return;    // no real particles
+  // dtmin is used as given: above CFL_SAFE of the estimate it holds the step where the
+  // integration gains energy (checked where dtmin takes over; warned once per value)
+  if (dtmin > 0.0 && dtmin > CFL_SAFE * dt && dtmin != dtmin_warned) {
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "Fix esph/integrate: dtmin {} is {:.3g} times the CFL estimate {:.4g} "
+                     "(vector element 3), so the step is held above {} of it, where the "
+                     "integration gains energy (lost atoms at 1.0): lower dtmin to at most "
+                     "{:.4g}, or leave it out",
+                     dtmin, dtmin / dt, dt, CFL_SAFE, cfl * dt);
+    dtmin_warned = dtmin;
+  }
   dt *= cfl;
   if (dtmin > 0.0) dt = MAX(dt, dtmin);
   if (dtmax > 0.0) dt = MIN(dt, dtmax);

@@ -23,6 +23,7 @@ FixStyle(esph/integrate,FixESPHIntegrate);
 #include "fix.h"
 
 #include "esph_contact.h"
+#include "esph_spin_watch.h"
 
 #include <utility>
 #include <vector>
@@ -95,7 +96,9 @@ class FixESPHIntegrate : public Fix {
   double cfl;                         // CFL safety factor, 0 = fixed time step
   double dtmin, dtmax;                // bounds of the adaptive step
   ESPH::ContactRecord contact_all;    // contact history of all bodies together
-  void update_body_pairs(double t);
+  void update_body_pairs(double t, int setup = 0);
+  ESPHSpinWatch spin_watch;    // angular momentum of free bodies (gradient corrected, plain)
+  int spin_watch_on;           // watched in this run
   void contact_tallies(double *total);
   int havepred;        // pred holds the prediction of a completed step
   bigint fp_natoms;    // number of atoms when the fingerprints were stored
@@ -119,7 +122,8 @@ class FixESPHIntegrate : public Fix {
   void check_average_forces();
   void check_fixed_dt();
   double cfl_estimate(const class PairESPHSolid *) const;
-  double dt_warned;    // the fixed time step last warned about (check_fixed_dt())
+  double dt_warned;       // the fixed time step last warned about (check_fixed_dt())
+  double dtmin_warned;    // the dtmin last warned about (adapt_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning
   static constexpr double CFL_SAFE = 0.6;
   double fingerprint(int);

@@ -386,6 +386,20 @@ void PairESPHSolid::settings(int narg, char **arg)
                    "Pair esph/solid friction {} has no effect with contact off (bodies do not "
                    "touch): use contact solid or paper",
                    friction);
+  // legal but meaningless contact settings (measured: a ramp of 1000 steps never coupled a
+  // short contact; a cap of 1e300 lets separating pairs push across any gap)
+  if (contact == CONTACT_SOLID && onset > ONSET_WARN && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid onset {}: the coupling of a newly touching pair builds over "
+                   "{} steps while the bodies move into each other, and a contact shorter than "
+                   "that never couples fully (tested: 0 to 5, default 5); use at most {}",
+                   onset, onset, ONSET_WARN);
+  if (contact == CONTACT_SOLID && gaptol > 1.0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid gap/tol {}: separating pairs may push across an open gap of "
+                   "up to {} smoothing lengths, i.e. between surfaces that are visibly apart "
+                   "(default 0.05); use a value below 1",
+                   gaptol, gaptol);
   if (astress_flag && astress_dp >= KERNEL_SUPPORT * h0)
     error->all(FLERR,
                "Pair esph/solid artstress spacing dp = {} must be below the kernel support "
@@ -1101,7 +1115,7 @@ double PairESPHSolid::boundary_spacing() const
 void PairESPHSolid::pair_pass(int bnd)
 {
   // keep the nodes of body pairs seen before: no allocation in the pair loop once known
-  for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
+  for (auto &kv : body_tally) kv.second.fill(0.0);
   LoopOut out{0, list->inum, acc, atom->f, atom_contact, &body_tally, 0, 0, 0.0};
   run_pair_loop(bnd, out);
   if (simd_active) bulk_pass(out);

@@ -89,11 +89,12 @@ class PairESPHSolid : public Pair {
   int recon_warned;           // the warning that visc/recon has no effect was given
   int heat_flag;              // artificial heat transfer (eqs. 8-10)
   double g1, g2;
-  int hvar_flag;         // variable smoothing length (eq. 24)
-  double hmax;           // allowed growth of h (cutoff factor)
-  int contact;           // ESPH::ContactRule
-  double gaptol;         // largest open gap a releasing contact pair may push across (of h0)
-  int onset;             // steps over which a newly touching particle's coupling builds up
+  int hvar_flag;    // variable smoothing length (eq. 24)
+  double hmax;      // allowed growth of h (cutoff factor)
+  int contact;      // ESPH::ContactRule
+  double gaptol;    // largest open gap a releasing contact pair may push across (of h0)
+  int onset;        // steps over which a newly touching particle's coupling builds up
+  static constexpr int ONSET_WARN = 20;    // a longer ramp is warned (settings())
   int cone_flag;         // contact/normal: 1 cone (common normal of the cones), 0 mean
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
@@ -172,7 +173,9 @@ class PairESPHSolid : public Pair {
   double fcontact;       // sum of transmitted compressive normal pair forces (local)
   // per pair of bodies (I < J) of the last compute: touching pairs, interacting pairs,
   // transmitted compressive normal force (local sums)
-  using BodyTally = std::map<std::pair<int, int>, std::array<double, 3>>;
+  // per pair of bodies and step: touching, interacting pairs, normal force, net force (3)
+  static constexpr int NTALLY = 6;
+  using BodyTally = std::map<std::pair<int, int>, std::array<double, NTALLY>>;
   BodyTally body_tally;
   bigint nboundary;    // number of boundary (zero-mass) particles, counted at setup
 
@@ -208,7 +211,7 @@ class PairESPHSolid : public Pair {
   void finalize(int eflag);
   void compute_normals();
   void store_bnd_gap(int);
-  static std::array<double, 3> &tally_bodies(BodyTally &, int, int);
+  static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
   void store_cone(int);

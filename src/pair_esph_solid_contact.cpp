@@ -93,11 +93,12 @@ void PairESPHSolid::store_cone(int i)
    the entry of the pair of bodies a, b (in either order) in a tally
 ------------------------------------------------------------------------- */
 
-std::array<double, 3> &PairESPHSolid::tally_bodies(BodyTally &tally, int a, int b)
+std::array<double, PairESPHSolid::NTALLY> &PairESPHSolid::tally_bodies(BodyTally &tally, int a,
+                                                                       int b)
 {
   const auto key = (a < b) ? std::make_pair(a, b) : std::make_pair(b, a);
   auto it = tally.find(key);
-  if (it == tally.end()) it = tally.emplace(key, std::array<double, 3>{0.0, 0.0, 0.0}).first;
+  if (it == tally.end()) it = tally.emplace(key, std::array<double, NTALLY>{}).first;
   return it->second;
 }
 

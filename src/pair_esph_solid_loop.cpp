@@ -383,6 +383,10 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           fcont += fpair;
           auto &tb = tally_bodies(tally, bi, body[j]);
           tb[2] += fpair;
+          // the net force on the body of the smaller ID (ff acts on i), friction included
+          const double wnet =
+              ((newton_pair || j < nlocal) ? 1.0 : 0.5) * ((bi < body[j]) ? 1.0 : -1.0);
+          for (int a = 0; a < 3; a++) tb[3 + a] += wnet * ff[a];
           if (count_pair) {
             ncontact++;
             tb[1] += 1.0;

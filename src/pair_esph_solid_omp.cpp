@@ -231,14 +231,14 @@ void PairESPHSolidOMP::pair_pass(int bnd)
 
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
-  for (auto &kv : body_tally) kv.second = {0.0, 0.0, 0.0};
+  for (auto &kv : body_tally) kv.second.fill(0.0);
   for (const auto &t : thr) {
     ncontact_pairs += t.ncontact;
     ntouch_pairs += t.ntouch;
     fcontact += t.fcontact;
     for (const auto &kv : t.tally) {
       auto &b = tally_bodies(body_tally, kv.first.first, kv.first.second);
-      for (int k = 0; k < 3; k++) b[k] += kv.second[k];
+      for (int k = 0; k < NTALLY; k++) b[k] += kv.second[k];
     }
   }
 }

@@ -181,6 +181,10 @@ CASES = [
     ("ps_onset_negative", [K("pair", " onset -1")], "error:onset must be >= 0"),
     ("ps_onset_text", [K("pair", " onset slow")], "error:Expected integer"),
     ("ps_onset_default", [K("pair", " onset 5")], "same"),
+    ("ps_onset_huge", [K("pair", " onset 1000")], "warning:never couples fully"),
+    ("ps_onset_20", [K("pair", " onset 20")], "runs"),
+    ("ps_gaptol_huge", [K("pair", " gap/tol 1e300")], "warning:visibly apart"),
+    ("ps_gaptol_one", [K("pair", " gap/tol 1")], "runs"),
     # a body added between runs while the old boundary particles remain: the fix uses them
     ("bf_body_added_reused",
      [A("run", "unfix bnd"), A("run", "region rc block 0.0004 0.0006 -0.0001 0.0001 -0.0001 0.0001 units box"),
@@ -342,6 +346,16 @@ CASES = [
     ("fi_dtmax_without_cfl", [K("fix_int", " dtmax 1e-9")], "error:need the cfl keyword"),
     ("fi_dtmax_negative", [K("fix_int", " cfl 0.3 dtmax -1e-9")], "error:dtmax must be > 0"),
     ("fi_dtmin_negative", [K("fix_int", " cfl 0.3 dtmin -1e-9")], "error:dtmin must be > 0"),
+    # compute esph/contact: bodies touching at the start have their row from step 0 (it
+    # stopped with "out-of-range" before 2026-12-05); no arguments; a row that never exists
+    ("cc_row_at_start", [A("ke", "compute cont all esph/contact"),
+                         K("thermo_style", " c_cont[1][3] c_cont[1][5] c_cont[1][12]")], "runs", 2),
+    ("cc_argument", [A("ke", "compute cont all esph/contact 1")], "error:it takes no arguments"),
+    ("cc_row_missing", [A("ke", "compute cont all esph/contact"),
+                        K("thermo_style", " c_cont[2][3]")], "error:out-of-range"),
+    # the base's CFL estimate is about 2.2e-8 s
+    ("fi_dtmin_unsafe", [K("fix_int", " cfl 0.3 dtmin 2e-8")], "warning:dtmin 2e-08 is"),
+    ("fi_dtmin_safe", [K("fix_int", " cfl 0.3 dtmin 2e-9")], "runs"),
     ("fi_dtmin_above_dtmax", [K("fix_int", " cfl 0.3 dtmin 1e-8 dtmax 1e-9")],
      "error:larger than dtmax"),
     ("fi_move_text", [K("fix_int", " move maybe")], "error:Expected boolean"),
