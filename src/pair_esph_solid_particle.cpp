@@ -93,12 +93,15 @@ void PairESPHSolid::hoist()
   // per chunk of atoms: the smallest time step, the first atom whose h is too large
   std::vector<double> dtmin(nthreads, BIG_DT);
   std::vector<int> hbad(nthreads, -1);
+  // per chunk: the first real particle whose state or pressure is not finite
+  std::vector<int> nonfinite(nthreads, -1);
+  int *const nonfinite_t = nonfinite.data();
   double *const dtmin_t = dtmin.data();
   int *const hbad_t = hbad.data();
   // (captures by value: the pointers in registers, as in a plain loop)
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     double dtl = BIG_DT;
-    int hb = -1;
+    int hb = -1, nf = -1;
     for (int i = from; i < to; i++) {
       if (recon_shift)
         for (int k = 0; k < 6; k++) drecu[i][k] = drec[i][k];
@@ -137,6 +140,10 @@ void PairESPHSolid::hoist()
         const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
         double P, c2;
         eos[itype].compute(rho, e, P, c2);
+        // a NaN or inf anywhere in the state shows here (one check per particle)
+        if (nf < 0 &&
+            !std::isfinite(P + c2 + e + h + sp[0] + sp[1] + sp[2] + sp[3] + sp[4] + sp[5]))
+          nf = i;
         if (c2 < 0.0) c2 = 0.0;
         const double c = sqrt(c2);
         const double inv = 1.0 / (rho * rho);
@@ -182,6 +189,7 @@ void PairESPHSolid::hoist()
     }
     dtmin_t[tid] = dtl;
     hbad_t[tid] = hb;
+    nonfinite_t[tid] = nf;
   });
   // contact/normal cone: the cones of the last computation become the ones this one uses
   // (unless it re-evaluates the last computation)
@@ -201,6 +209,31 @@ void PairESPHSolid::hoist()
   cone_keep = 0;
   dt_cfl = BIG_DT;
   for (int t = 0; t < nthreads; t++) {
+    if (nonfinite[t] >= 0) {
+      const int i = nonfinite[t];
+      const double *p = pred ? pred[i] : nullptr;
+      const double rho = p ? p[FixESPHIntegrate::P_RHO] : state->rho[i];
+      const double e = p ? p[FixESPHIntegrate::P_E] : state->e[i];
+      double P, c2;
+      eos[atom->type[i]].compute(rho, e * ein, P, c2);
+      const double *sp = p ? p + FixESPHIntegrate::P_S : state->s[i];
+      double smax = 0.0;
+      for (int k = 0; k < 6; k++)
+        if (!(fabs(sp[k]) <= fabs(smax))) smax = sp[k];
+      // (written out in words: a bare nan in the log reads like a thermo value)
+      const auto val = [](double x) {
+        return std::isfinite(x) ? fmt::format("{}", x) : std::string("not finite");
+      };
+      error->one(FLERR, Error::NOLASTLINE,
+                 "Pair esph/solid: atom {} (type {}) has a non-finite state at step {}: "
+                 "density {}, specific energy {}, pressure {} and bulk sound speed {} from its "
+                 "equation of state, largest deviatoric stress component {}; the "
+                 "run has gone unstable (a time step above the stable one: fix esph/integrate "
+                 "cfl, vector element 3) or a material parameter is out of range (pair_coeff "
+                 "eos, visc, artstress)",
+                 atom->tag[i], atom->type[i], update->ntimestep, val(rho), val(e), val(P / pin),
+                 val((c2 >= 0.0) ? sqrt(c2) : c2), val(smax));
+    }
     dt_cfl = MIN(dt_cfl, dtmin[t]);
     if (hbad[t] >= 0) {
       const double *p = pred ? pred[hbad[t]] : nullptr;

@@ -346,6 +346,12 @@ CASES = [
     ("fi_dtmax_without_cfl", [K("fix_int", " dtmax 1e-9")], "error:need the cfl keyword"),
     ("fi_dtmax_negative", [K("fix_int", " cfl 0.3 dtmax -1e-9")], "error:dtmax must be > 0"),
     ("fi_dtmin_negative", [K("fix_int", " cfl 0.3 dtmin -1e-9")], "error:dtmin must be > 0"),
+    # an EOS that cannot be evaluated in compression (Mie-Grueneisen slope s = 1e300: its
+    # sound speed is NaN at the first compression): a run went on with NaN thermo, no
+    # message; now the step it happens names the atom and the state (one rank: like LAMMPS's
+    # own "Lost atoms", the rank that sees it stops the run, with its own atom)
+    ("pc_mg_slope_huge", [R("coeff", "pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen "
+                                     "3574 1e300 1.69")], "error:has a non-finite state"),
     # compute esph/contact: bodies touching at the start have their row from step 0 (it
     # stopped with "out-of-range" before 2026-12-05); no arguments; a row that never exists
     ("cc_row_at_start", [A("ke", "compute cont all esph/contact"),
