@@ -80,10 +80,11 @@ worst = max(np.abs(np.array(th1[k]) - np.array(th2[k])).max() / max(np.abs(th1[k
 c.less("np 1 vs np 2: worst thermo difference", worst, 1e-10, "round-off")
 for k in ("first12_us", "tc12_us", "first23_us", "tc23_us", "ep12", "ep23"):
     c.near(f"np 1 vs np 2: {k}", s2[k], s[k], 0, "the same steps")
-for k in ("J12", "J23"):
+for k in ("J12", "J23", "Jnet12x", "Jnet23x"):
     c.near(f"np 1 vs np 2: {k}", s2[k], s[k], 1e-10 * abs(s[k]), "round-off")
 # a split run continues the contact history of both interfaces exactly
 log3, s3 = cradle("split", split=1)
-for k in ("first12_us", "tc12_us", "first23_us", "tc23_us", "ep12", "ep23", "J12", "J23", "v3"):
+for k in ("first12_us", "tc12_us", "first23_us", "tc23_us", "ep12", "ep23", "J12", "J23", "v3",
+          "Jnet12x", "Jnet23x"):
     c.near(f"split run: {k}", s3[k], s[k], 1e-12 * abs(s[k]), "the uninterrupted run")
 c.done()
