@@ -330,6 +330,13 @@ void PairESPHSolid::settings(int narg, char **arg)
         error->all(FLERR, iarg + 4, "Pair esph/solid artstress spacing dp must be > 0, got {}",
                    arg[iarg + 3]);
       astress_flag = (astress_eps > 0.0);
+      // (W / W(dp))^n is a hard core for a large n: a helper's n = 1000 lost atoms at once
+      if (astress_flag && astress_n > 8 && comm->me == 0)
+        error->warning(FLERR,
+                       "Pair esph/solid artstress exponent {}: the repulsion grows as (W / "
+                       "W(dp))^{} below the spacing dp, a hard core that the time step does "
+                       "not resolve (published and tested: 4); use n from 2 to 8",
+                       astress_n, astress_n);
       iarg += 4;
     } else if (strcmp(arg[iarg], "simd") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid simd", error);

@@ -163,6 +163,8 @@ CASES = [
     ("ps_artstress_missing", [K("pair", " artstress 0.3 4")], "error:missing argument"),
     ("ps_artstress_negative", [K("pair", " artstress -0.3 4 1e-4")], "error:epsilon must be >= 0"),
     ("ps_artstress_n_zero", [K("pair", " artstress 0.3 0 1e-4")], "error:n must be >= 1"),
+    ("ps_artstress_n_huge", [K("pair", " artstress 0.3 1000 1e-4")], "warning:a hard core"),
+    ("ps_artstress_n_8", [K("pair", " artstress 0.3 8 1e-4")], "runs"),
     ("ps_artstress_n_text", [K("pair", " artstress 0.3 four 1e-4")], "error:Expected integer"),
     ("ps_artstress_dp_zero", [K("pair", " artstress 0.3 4 0")], "error:dp must be > 0"),
     ("ps_artstress_dp_too_big", [K("pair", " artstress 0.3 4 3e-4")], "error:below the kernel"),
