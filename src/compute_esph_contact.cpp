@@ -34,6 +34,10 @@ ComputeESPHContact::ComputeESPHContact(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg != 3) error->all(FLERR, "Illegal compute esph/contact command: it takes no arguments");
   array_flag = 1;
+  // the scalar: the number of rows (pairs of bodies that have touched), so that an input
+  // can ask before it names a row
+  scalar_flag = 1;
+  extscalar = 0;
   size_array_cols = NCOLS;
   size_array_rows = 0;
   size_array_rows_variable = 1;
@@ -56,6 +60,18 @@ void ComputeESPHContact::init()
   if (fixes.empty())
     error->all(FLERR, Error::NOLASTLINE, "Compute esph/contact requires fix esph/integrate");
   fix_int = dynamic_cast<FixESPHIntegrate *>(fixes[0]);
+}
+
+/* ----------------------------------------------------------------------
+   the number of rows now, as a scalar (c_ID in thermo, variables, if)
+------------------------------------------------------------------------- */
+
+double ComputeESPHContact::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  if (!fix_int) init();
+  scalar = (double) fix_int->body_pairs.size();
+  return scalar;
 }
 
 /* ----------------------------------------------------------------------

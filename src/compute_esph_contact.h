@@ -30,6 +30,7 @@ class ComputeESPHContact : public Compute {
   ~ComputeESPHContact() override;
   void init() override;
   void compute_array() override;
+  double compute_scalar() override;
   int lock_length() override;
 
   static constexpr int NCOLS = 17;

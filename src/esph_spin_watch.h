@@ -21,7 +21,8 @@
 // per body); a body that touched no other body since the previous sample is free, and a
 // change of its angular momentum over free intervals beyond TOL of its scale is warned
 // once per body, with the remedy. Not run where it cannot judge: without a contact rule,
-// or with another fix that adds forces (gravity, addforce, ...: they may exert torques).
+// or with another fix that may exert torques (fix esph/integrate's other_torques(): one that
+// adds forces, fix enforce2d excepted, or one that sets velocities: momentum, thermostats).
 
 #ifndef LMP_ESPH_SPIN_WATCH_H
 #define LMP_ESPH_SPIN_WATCH_H

@@ -88,6 +88,8 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   dt_warned = 0.0;
   dtmin_warned = 0.0;
   spin_watch_on = 0;
+  moved_warned = 0;
+  moved_step = -1;
   extrapolate = 1;
   extrapolate_set = 0;
   extrap_on = 0;
@@ -318,8 +320,27 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   spin_watch_on = pair->nboundary > 0 && move && domain->dimension > 1 &&
       (pair->correct_flag == PairESPHSolid::CORRECT_PLAIN ||
        pair->correct_flag == PairESPHSolid::CORRECT_RATE) &&
-      modify->n_post_force_any == 0;
+      !other_torques();
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
+}
+
+/* ----------------------------------------------------------------------
+   true if another fix may change the bodies' angular momentum: one that adds
+   forces (but fix enforce2d, which adds no in-plane torque) or one that sets
+   velocities (fix momentum ... angular, thermostats, fix recenter)
+------------------------------------------------------------------------- */
+
+bool FixESPHIntegrate::other_torques()
+{
+  for (const auto &ifix : modify->get_fix_list()) {
+    if (ifix == this) continue;
+    const std::string style = ifix->style;
+    if ((modify->get_fix_mask(ifix) & FixConst::POST_FORCE) && style != "enforce2d") return true;
+    if (utils::strmatch(style, "^momentum") || utils::strmatch(style, "^temp/") ||
+        utils::strmatch(style, "^recenter") || utils::strmatch(style, "^langevin"))
+      return true;
+  }
+  return false;
 }
 
 /* ----------------------------------------------------------------------
@@ -403,13 +424,15 @@ void FixESPHIntegrate::check_fixed_dt()
   const double dt = cfl_estimate(pair);
   if (dt >= 1.0e299 || dt <= 0.0) return;    // no real particles
   const double ratio = update->dt / dt;
-  if (ratio > CFL_SAFE && update->dt != dt_warned && comm->me == 0)
+  if (!(ratio > CFL_SAFE) || update->dt == dt_warned) return;
+  if (comm->me == 0)
     error->warning(FLERR,
-                   "Fix esph/integrate: the time step {} is {:.3g} times the CFL estimate {:.4g} "
-                   "(vector element 3); above {} the integration gains energy, the faster "
-                   "the larger the step (nine-fold in 2000 steps at 0.7, lost atoms at 1.0): "
-                   "use fix esph/integrate cfl 0.3 or a time step of at most {:.4g}",
-                   update->dt, ratio, dt, CFL_SAFE, 0.3 * dt);
+                   "Fix esph/integrate: at step {} the time step {} is {:.3g} times the CFL "
+                   "estimate {:.4g} (vector element 3; it falls where the material stiffens "
+                   "under compression); above {} the integration gains energy, the faster the "
+                   "larger the step (nine-fold in 2000 steps at 0.7, lost atoms at 1.0): use "
+                   "fix esph/integrate cfl 0.3 or a time step of at most {:.4g}",
+                   update->ntimestep, update->dt, ratio, dt, CFL_SAFE, 0.3 * dt);
   dt_warned = update->dt;
 }
 
@@ -730,8 +753,8 @@ void FixESPHIntegrate::final_integrate()
                  "step {}: a fix other than esph/integrate {} moves it by integrating forces, "
                  "which divides by its zero mass (e.g. fix move variable with NULL displacement "
                  "and velocity, or fix nve); prescribe the motion (fix move linear, wiggle, "
-                 "rotate, or variable with displacement variables) for the whole body, boundary "
-                 "particles included",
+                 "rotate, or variable with displacement and velocity variables) for the whole "
+                 "body, boundary particles included",
                  atom->tag[i], state->body ? state->body[i] : 0, update->ntimestep, id);
     }
   // force computations outside a step see the state as is, unless a run continues
@@ -753,6 +776,85 @@ void FixESPHIntegrate::final_integrate()
     update_body_pairs(t);
     if (spin_watch_on) spin_watch.step(lmp, state, groupbit, update->ntimestep, id);
   }
+  // a fixed time step against the CFL estimate during the run too (the estimate falls where
+  // an impact compresses a stiffening material), every FIXED_DT_CHECK steps
+  if (cfl <= 0.0 && update->ntimestep % FIXED_DT_CHECK == 0) check_fixed_dt();
+  check_moved_velocities();
+}
+
+/* ----------------------------------------------------------------------
+   real particles outside the group that another fix moves must carry the
+   velocities of their motion: the contact and the boundary normals read
+   them. fix move variable with displacement variables and no velocity
+   variables leaves them as they were (a turned body was seen at rest).
+   Every FIXED_DT_CHECK steps the displacement over one step is compared
+   with the mean of its end velocities (exact for a uniform motion,
+   O(omega dt) relative for a rotation); warned once.
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::check_moved_velocities()
+{
+  if (moved_warned) return;
+  const bigint step = update->ntimestep;
+  const int phase = step % FIXED_DT_CHECK;
+  if (phase != FIXED_DT_CHECK - 1 && phase != 0) return;
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const double *rmass = state->rmass;
+  if (phase == FIXED_DT_CHECK - 1) {
+    moved_then.clear();
+    for (int i = 0; i < nlocal; i++)
+      if (rmass[i] > 0.0 && !(mask[i] & groupbit))
+        moved_then[tag[i]] = {x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2]};
+    moved_step = step;
+    return;
+  }
+  if (moved_step != step - 1) return;
+  const double dt = update->dt;
+  tagint bad = 0;
+  double moved = 0.0, speed = 0.0;
+  for (int i = 0; i < nlocal && !bad; i++) {
+    if (!(rmass[i] > 0.0) || (mask[i] & groupbit)) continue;
+    const auto it = moved_then.find(tag[i]);
+    if (it == moved_then.end()) continue;
+    const auto &s = it->second;
+    double dx[3], err2 = 0.0, d2 = 0.0, v2 = 0.0;
+    for (int d = 0; d < 3; d++) dx[d] = x[i][d] - s[d];
+    domain->minimum_image(FLERR, dx);
+    for (int d = 0; d < 3; d++) {
+      const double vbar = 0.5 * (v[i][d] + s[3 + d]);
+      err2 += (dx[d] - vbar * dt) * (dx[d] - vbar * dt);
+      d2 += dx[d] * dx[d];
+      v2 += v[i][d] * v[i][d];
+    }
+    if (d2 > 0.0 && err2 > 1.0e-4 * d2) {
+      bad = tag[i];
+      moved = sqrt(d2);
+      speed = sqrt(v2);
+    }
+  }
+  moved_then.clear();
+  tagint any;
+  MPI_Allreduce(&bad, &any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (!any) return;
+  moved_warned = 1;
+  // the values of the atom named, from its rank
+  const double mine[2] = {bad == any ? moved : 0.0, bad == any ? speed : 0.0};
+  double all[2];
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  moved = all[0];
+  speed = all[1];
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/integrate: atom {} outside its group moved {} in step {} at a "
+                   "speed of {}, not its velocity times the step: a fix moves it without "
+                   "setting the velocities of the motion (fix move variable with displacement "
+                   "variables but no velocity variables); the contact and the boundary normals "
+                   "read the velocities and see the body otherwise: give velocity variables",
+                   any, moved, step, speed);
 }
 
 /* ----------------------------------------------------------------------
@@ -964,10 +1066,10 @@ void FixESPHIntegrate::adapt_dt()
     if (comm->me == 0)
       error->warning(FLERR,
                      "Fix esph/integrate: dtmin {} is {:.3g} times the CFL estimate {:.4g} "
-                     "(vector element 3), so the step is held above {} of it, where the "
-                     "integration gains energy (lost atoms at 1.0): lower dtmin to at most "
-                     "{:.4g}, or leave it out",
-                     dtmin, dtmin / dt, dt, CFL_SAFE, cfl * dt);
+                     "(vector element 3): where the cfl step falls below dtmin, the step is "
+                     "held at dtmin, above {} of the estimate, where the integration gains "
+                     "energy (lost atoms at 1.0); lower dtmin below {:.4g}, or leave it out",
+                     dtmin, dtmin / dt, dt, CFL_SAFE, CFL_SAFE * dt);
     dtmin_warned = dtmin;
   }
   dt *= cfl;

@@ -25,6 +25,8 @@ FixStyle(esph/integrate,FixESPHIntegrate);
 #include "esph_contact.h"
 #include "esph_spin_watch.h"
 
+#include <array>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -119,6 +121,11 @@ class FixESPHIntegrate : public Fix {
   void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
   void check_group();
+  bool other_torques();
+  void check_moved_velocities();
+  int moved_warned;                                                // warned once
+  bigint moved_step;                                               // step of moved_then
+  std::unordered_map<tagint, std::array<double, 6>> moved_then;    // x, v by atom ID
   void check_average_forces();
   void check_fixed_dt();
   double cfl_estimate(const class PairESPHSolid *) const;
@@ -126,6 +133,7 @@ class FixESPHIntegrate : public Fix {
   double dtmin_warned;    // the dtmin last warned about (adapt_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning
   static constexpr double CFL_SAFE = 0.6;
+  static constexpr int FIXED_DT_CHECK = 100;    // steps between checks of a fixed step
   double fingerprint(int);
   void wrapped_position(int, double *);
   bool same_position(int, const double *);

@@ -547,6 +547,15 @@ void PairESPHSolid::coeff(int narg, char **arg)
           error->all(FLERR, iarg + 5,
                      "Pair esph/solid eos mie/gruneisen gamma0 must be >= 0, got {}",
                      arg[iarg + 4]);
+        // the Hugoniot pressure diverges at the compression eta = 1 - rho0/rho = 1/s (a
+        // helper's s = 1e6 multiplied the energy by 138 within 50 steps of contact)
+        if (eq.s > MG_SLOPE_WARN && comm->me == 0)
+          error->warning(FLERR,
+                         "Pair esph/solid eos mie/gruneisen s {}: its Hugoniot pressure "
+                         "diverges at the compression 1 - rho0/rho = 1/s = {:.3g}, which an "
+                         "impact reaches (metals: s from 1 to 2, iron 1.92, aluminium 1.4); "
+                         "check the value",
+                         eq.s, 1.0 / eq.s);
         iarg += 5;
       } else {
         error->all(FLERR, iarg + 2,

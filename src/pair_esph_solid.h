@@ -98,7 +98,8 @@ class PairESPHSolid : public Pair {
   int contact;      // ESPH::ContactRule
   double gaptol;    // largest open gap a releasing contact pair may push across (of h0)
   int onset;        // steps over which a newly touching particle's coupling builds up
-  static constexpr int ONSET_WARN = 20;    // a longer ramp is warned (settings())
+  static constexpr int ONSET_WARN = 20;           // a longer ramp is warned (settings())
+  static constexpr double MG_SLOPE_WARN = 5.0;    // a steeper Hugoniot is warned (coeff())
   int cone_flag;         // contact/normal: 1 cone (common normal of the cones), 0 mean
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability

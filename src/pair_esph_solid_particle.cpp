@@ -226,13 +226,13 @@ void PairESPHSolid::hoist()
       };
       error->one(FLERR, Error::NOLASTLINE,
                  "Pair esph/solid: atom {} (type {}) has a non-finite state at step {}: "
-                 "density {}, specific energy {}, pressure {} and bulk sound speed {} from its "
-                 "equation of state, largest deviatoric stress component {}; the "
+                 "density {}, specific energy {}, pressure {} and squared bulk sound speed {} "
+                 "from its equation of state, largest deviatoric stress component {}; the "
                  "run has gone unstable (a time step above the stable one: fix esph/integrate "
                  "cfl, vector element 3) or a material parameter is out of range (pair_coeff "
                  "eos, visc, artstress)",
                  atom->tag[i], atom->type[i], update->ntimestep, val(rho), val(e), val(P / pin),
-                 val((c2 >= 0.0) ? sqrt(c2) : c2), val(smax));
+                 val(c2), val(smax));
     }
     dt_cfl = MIN(dt_cfl, dtmin[t]);
     if (hbad[t] >= 0) {

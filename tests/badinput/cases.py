@@ -309,6 +309,20 @@ CASES = [
       R("fix_int", "fix int a esph/integrate"),
       A("velocity", "fix mv b move variable NULL NULL NULL NULL NULL NULL units box")],
      "error:has a non-finite position after step", 2),
+    # fix move variable with displacements but no velocities: the body moves, its velocities
+    # stay as they were, and the contact and the normals read them (checked every 100 steps)
+    ("pc_rigid_move_variable_no_velocity",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"), A("velocity", "variable dxb equal 5*time"),
+      A("velocity", "variable zero equal 0.0"),
+      A("velocity", "fix mv b move variable v_dxb v_zero v_zero NULL NULL NULL units box"),
+      R("run", "run 120")], "warning:without setting the velocities", 2),
+    ("pc_rigid_move_variable_velocity",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"), A("velocity", "variable dxb equal 5*time"),
+      A("velocity", "variable vxb equal 5"), A("velocity", "variable zero equal 0.0"),
+      A("velocity", "fix mv b move variable v_dxb v_zero v_zero v_vxb v_zero v_zero units box"),
+      R("run", "run 120")], "runs"),
     ("pc_rigid_move_rotate",
      [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
       R("fix_int", "fix int a esph/integrate"),
@@ -352,12 +366,16 @@ CASES = [
     # sound speed is NaN at the first compression): a run went on with NaN thermo, no
     # message; now the step it happens names the atom and the state (one rank: like LAMMPS's
     # own "Lost atoms", the rank that sees it stops the run, with its own atom)
+    ("pc_mg_slope_steep", [R("coeff", "pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen "
+                                      "3574 10 1.69")], "warning:diverges at the compression"),
     ("pc_mg_slope_huge", [R("coeff", "pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen "
                                      "3574 1e300 1.69")], "error:has a non-finite state"),
     # compute esph/contact: bodies touching at the start have their row from step 0 (it
     # stopped with "out-of-range" before 2026-12-05); no arguments; a row that never exists
     ("cc_row_at_start", [A("ke", "compute cont all esph/contact"),
                          K("thermo_style", " c_cont[1][3] c_cont[1][5] c_cont[1][12]")], "runs", 2),
+    ("cc_scalar_rows", [A("ke", "compute cont all esph/contact"), K("thermo_style", " c_cont")],
+     "runs"),
     ("cc_argument", [A("ke", "compute cont all esph/contact 1")], "error:it takes no arguments"),
     ("cc_row_missing", [A("ke", "compute cont all esph/contact"),
                         K("thermo_style", " c_cont[2][3]")], "error:out-of-range"),
