@@ -322,6 +322,9 @@ void FixESPHIntegrate::setup(int /*vflag*/)
        pair->correct_flag == PairESPHSolid::CORRECT_RATE) &&
       !other_torques();
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
+  // (positions may have been changed between runs: the motion check starts afresh)
+  moved_step = -1;
+  moved_then.clear();
 }
 
 /* ----------------------------------------------------------------------
