@@ -32,15 +32,10 @@ static constexpr int NSUM = 17;
 
 void ESPHSpinWatch::setup(LAMMPS *lmp, ESPHState *state, int groupbit)
 {
-  std::vector<int> mine;
-  const int *mask = lmp->atom->mask;
-  const int nlocal = lmp->atom->nlocal;
+  // the bodies with real particles in the group, on all ranks (sorted)
+  bodies.clear();
   if (state->body)
-    for (int i = 0; i < nlocal; i++)
-      if ((mask[i] & groupbit) && state->rmass[i] > 0.0) mine.push_back(state->body[i]);
-  std::sort(mine.begin(), mine.end());
-  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-  bodies = ESPHCheck::global_set(lmp, mine);
+    for (const auto &kv : ESPHCheck::body_counts(lmp, state, groupbit)) bodies.push_back(kv.first);
   refs.assign(bodies.size(), Ref());
   hit.clear();
 }

@@ -711,19 +711,18 @@ void FixESPHIntegrate::final_integrate()
 
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     for (int i = from; i < to; i++) {
-      if (!(i < nint && (mask[i] & groupbit)) || !move) {
+      const bool in_group = i < nint && (mask[i] & groupbit);
+      if (rmass[i] == 0.0 && !(in_group && move)) {
         // a boundary particle that another fix moves (fix move on a rigid body, or move no)
         // or that stays at rest turns with its body's spin at the end of the step, from
         // the velocities that fix has set: exact for a rigid rotation, nothing at rest or
         // in translation
-        if (rmass[i] == 0.0) {
-          rotate_normal(n[i], bspin[i]);
-          if (nonfinite_t[tid] < 0 &&
-              !(std::isfinite(x[i][0]) && std::isfinite(x[i][1]) && std::isfinite(x[i][2])))
-            nonfinite_t[tid] = i;
-        }
-        if (!(i < nint && (mask[i] & groupbit))) continue;
+        rotate_normal(n[i], bspin[i]);
+        if (nonfinite_t[tid] < 0 &&
+            !(std::isfinite(x[i][0]) && std::isfinite(x[i][1]) && std::isfinite(x[i][2])))
+          nonfinite_t[tid] = i;
       }
+      if (!in_group) continue;
       if (rmass[i] > 0.0) {
         if (move) {
           const double dtfm = dtf / rmass[i];
