@@ -17,6 +17,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_bodies.h"
 #include "esph_check.h"
 #include "esph_state.h"
 
@@ -24,9 +25,6 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
-
-// per body: m, m x (3), m v (3), m x cross v (3), m x x^T (xx yy zz xy xz yz), m v.v / 2
-static constexpr int NSUM = 17;
 
 /* ---------------------------------------------------------------------- */
 
@@ -47,64 +45,25 @@ void ESPHSpinWatch::step(LAMMPS *lmp, ESPHState *state, int groupbit, bigint nti
 {
   if (ntimestep % SAMPLE != 0 || bodies.empty()) return;
   const int nb = bodies.size();
-  std::vector<double> local(NSUM * nb, 0.0), sum(NSUM * nb);
-  Atom *atom = lmp->atom;
-  double **x = atom->x;
-  double **v = atom->v;
-  const imageint *image = atom->image;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) {
-    const double m = state->rmass[i];
-    if (!(mask[i] & groupbit) || !(m > 0.0)) continue;
-    const auto it = std::lower_bound(bodies.begin(), bodies.end(), state->body[i]);
-    if (it == bodies.end() || *it != state->body[i]) continue;
-    double *s = local.data() + NSUM * (it - bodies.begin());
-    double xu[3];
-    lmp->domain->unmap(x[i], image[i], xu);
-    const double *vi = v[i];
-    s[0] += m;
-    for (int d = 0; d < 3; d++) {
-      s[1 + d] += m * xu[d];
-      s[4 + d] += m * vi[d];
-    }
-    s[7] += m * (xu[1] * vi[2] - xu[2] * vi[1]);
-    s[8] += m * (xu[2] * vi[0] - xu[0] * vi[2]);
-    s[9] += m * (xu[0] * vi[1] - xu[1] * vi[0]);
-    s[10] += m * xu[0] * xu[0];
-    s[11] += m * xu[1] * xu[1];
-    s[12] += m * xu[2] * xu[2];
-    s[13] += m * xu[0] * xu[1];
-    s[14] += m * xu[0] * xu[2];
-    s[15] += m * xu[1] * xu[2];
-    s[16] += 0.5 * m * (vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
-  }
-  MPI_Allreduce(local.data(), sum.data(), NSUM * nb, MPI_DOUBLE, MPI_SUM, lmp->world);
+  std::vector<double> sum;
+  ESPH::body_sums(lmp, state, groupbit, bodies, lmp->atom->v, 0, sum);
 
   for (int k = 0; k < nb; k++) {
-    const double *s = sum.data() + NSUM * k;
     Ref &r = refs[k];
     const int body = bodies[k];
     const bool free = (hit.count(body) == 0);
-    const double M = s[0];
+    const ESPH::BodyMotion b = ESPH::body_motion(sum.data() + ESPH::BODY_NSUM * k);
+    const double M = b.M;
     if (!(M > 0.0) || !free) {
       r.valid = false;
       continue;
     }
-    double c[3], V[3], L[3];
-    for (int d = 0; d < 3; d++) {
-      c[d] = s[1 + d] / M;
-      V[d] = s[4 + d] / M;
-    }
-    // about the centre of mass: L = sum m x x v - M c x V, trace of the second moment,
-    // the kinetic energy of the motion relative to the centre of mass
-    L[0] = s[7] - M * (c[1] * V[2] - c[2] * V[1]);
-    L[1] = s[8] - M * (c[2] * V[0] - c[0] * V[2]);
-    L[2] = s[9] - M * (c[0] * V[1] - c[1] * V[0]);
-    const double trS =
-        std::max(0.0, s[10] + s[11] + s[12] - M * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
-    const double V2 = V[0] * V[0] + V[1] * V[1] + V[2] * V[2];
-    const double Kcm = std::max(0.0, s[16] - 0.5 * M * V2);
+    // the trace of the second moment about the centre of mass, the kinetic energy of the
+    // motion relative to it
+    const double *L = b.L;
+    const double trS = b.S[0] + b.S[1] + b.S[2];
+    const double V2 = b.V[0] * b.V[0] + b.V[1] * b.V[1] + b.V[2] * b.V[2];
+    const double Kcm = b.Kcm;
     const double Lnorm = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
     if (!r.valid) {
       // the scale of a change: the angular momentum itself, or, for a body that hardly

@@ -102,6 +102,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   fit = FIT_DEFAULT;
   btype = 0;
   mode = GENERATE;
+  turn_body = 0;
   ncreated = 0;
 
   int iarg = 3;
@@ -145,6 +146,18 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
                    "shape): its surface gives the normals when the boundary particles are made",
                    arg[iarg + 1]);
       region_ids.emplace_back(arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "turn") == 0) {
+      if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "fix esph/boundary turn", error);
+      if (strcmp(arg[iarg + 1], "spin") == 0)
+        turn_body = 0;
+      else if (strcmp(arg[iarg + 1], "body") == 0)
+        turn_body = 1;
+      else
+        error->all(FLERR, iarg + 1,
+                   "Fix esph/boundary turn {} is unknown: expected spin (the normals turn with "
+                   "the spin around them) or body (with their body's rigid spin)",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "given") == 0) {
       mode = GIVEN;

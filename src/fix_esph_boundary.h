@@ -38,6 +38,9 @@ class FixESPHBoundary : public Fix {
   double compute_scalar() override;
   // the particle spacing the boundary particles were placed for
   double get_spacing() const { return spacing; }
+  // the boundary normals turn with the rigid spin of their body (turn body), not with the
+  // spin interpolated from the real particles around them (turn spin, eq. 17)
+  int turns_with_body() const { return turn_body; }
 
  protected:
   double spacing;    // particle spacing of the bodies
@@ -45,6 +48,7 @@ class FixESPHBoundary : public Fix {
   double fit;        // radius of the surface fit of the normals, in spacings (0: off)
   int btype;         // type of generated boundary particles (0: type of the source particle)
   int mode;          // GENERATE or GIVEN
+  int turn_body;     // 1: normals turn with their body's rigid spin (turn body)
   bigint ncreated;
   class ESPHState *state;
   // real particles per body the boundary particles were generated (or found) for

@@ -34,6 +34,7 @@
 #include "fix_esph_boundary.h"
 #include "fix_esph_integrate.h"
 #include "force.h"
+#include "group.h"
 #include "info.h"
 #include "input.h"
 #include "math_const.h"
@@ -80,6 +81,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
 
   pred_valid = 0;
   normals_valid = 0;
+  turn_body = 0;
   dt_cfl = 0.0;
   dt_step = 0.0;
   dt_keep = 0;
@@ -674,6 +676,24 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
+  // fix esph/boundary turn body: the bodies of the run (body IDs do not change during one)
+  const FixESPHBoundary *bfix = boundary_fix();
+  turn_body = bfix && bfix->turns_with_body() && dim > 1;
+  turn_bodies.clear();
+  if (bfix && bfix->turns_with_body() && comm->me == 0) {
+    if (dim == 1)
+      error->warning(FLERR,
+                     "Fix esph/boundary turn body has no effect with pair esph/solid dimension "
+                     "1 (the normals are +-x and never turn): drop it");
+    else if (domain->xperiodic || domain->yperiodic || (domain->zperiodic && dim == 3))
+      error->warning(FLERR,
+                     "Fix esph/boundary turn body in a periodic box: a body that spans a "
+                     "periodic direction has no rigid rotation (its spin is taken from the "
+                     "particles of one period as unwrapped); use turn spin for such bodies");
+  }
+  if (turn_body)
+    for (const auto &kv : ESPHCheck::body_counts(lmp, state, group->bitmask[0]))
+      turn_bodies.push_back(kv.first);
   init_recon();
   drop_unused_state();
   // h against the particle spacing, before the neighbour bins are made for the cutoff

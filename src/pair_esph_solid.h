@@ -183,6 +183,10 @@ class PairESPHSolid : public Pair {
   using BodyTally = std::map<std::pair<int, int>, std::array<double, NTALLY>>;
   BodyTally body_tally;
   bigint nboundary;    // number of boundary (zero-mass) particles, counted at setup
+  // fix esph/boundary turn body: the bodies (sorted) whose rigid spin turns their boundary
+  // normals, instead of the spin interpolated around each boundary particle
+  int turn_body;
+  std::vector<int> turn_bodies;
 
   // per-atom contact output for compute esph/atom, only while one asks for it (its init()
   // sets the flag, init_style() clears it): interacting cross-body pairs and the sum of
@@ -214,6 +218,7 @@ class PairESPHSolid : public Pair {
   double boundary_spacing() const;
   void hoist();
   void finalize(int eflag);
+  void turn_with_bodies();
   void compute_normals();
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);

@@ -27,6 +27,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_bodies.h"
 #include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
@@ -36,6 +37,7 @@
 #include "fix.h"
 #include "fix_esph_integrate.h"
 #include "force.h"
+#include "group.h"
 #include "info.h"
 #include "math_special.h"
 #include "memory.h"
@@ -415,4 +417,33 @@ void PairESPHSolid::finalize(int eflag)
   if (eflag_global)
     for (int t = 0; t < nthreads; t++) eng_vdwl += esum[t];
   if (bnd) normals_valid = 1;
+  if (bnd && turn_body) turn_with_bodies();
+}
+
+/* ----------------------------------------------------------------------
+   fix esph/boundary turn body: the spin of every boundary particle is the
+   rigid spin of its body, omega = I^-1 L about the body's centre of mass,
+   from the predicted velocities of its real particles (collective)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::turn_with_bodies()
+{
+  std::vector<double> sum;
+  ESPH::body_sums(lmp, state, group->bitmask[0], turn_bodies, hq, Q_V, sum);
+  const int nb = turn_bodies.size();
+  std::vector<double> omega(3 * nb);
+  for (int k = 0; k < nb; k++)
+    ESPH::rigid_spin(ESPH::body_motion(sum.data() + ESPH::BODY_NSUM * k), dim, &omega[3 * k]);
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (rmass[i] > 0.0) continue;
+    const auto it = std::lower_bound(turn_bodies.begin(), turn_bodies.end(), body[i]);
+    if (it == turn_bodies.end() || *it != body[i]) continue;
+    // bspin holds W = [omega]x as W_xy, W_xz, W_yz
+    const double *w = &omega[3 * (it - turn_bodies.begin())];
+    bspin[i][0] = -w[2];
+    bspin[i][1] = w[1];
+    bspin[i][2] = -w[0];
+  }
 }

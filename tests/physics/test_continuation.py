@@ -10,6 +10,7 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   recon    the same with pair_style esph/solid visc/recon vanleer (strain rates carried over)
   cone     the same with contact/normal cone (the normal cones carried over), and with the
            staggered scheme as well (conestag)
+  turnbody the same with fix esph/boundary turn body (the bodies' rigid spins)
   plastic  the same with hardening plasticity, the artificial stress and XSPH, fixed step
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
@@ -66,6 +67,9 @@ scenes["recon"] = block_scene("cfl 0.3", "visc/recon vanleer") + ({},)
 # (fix esph/integrate's per-atom prediction), also through the staggered scheme's rate pass
 scenes["cone"] = block_scene("cfl 0.3", "contact/normal cone") + ({},)
 scenes["conestag"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1 contact/normal cone") + ({},)
+# fix esph/boundary turn body: the bodies' rigid spins, sums over all ranks every step
+scenes["turnbody"] = tuple(t.replace("esph/boundary spacing 1e-4", "esph/boundary spacing 1e-4 turn body")
+                           for t in block_scene("cfl 0.3")) + ({},)
 # a triclinic box: every setup takes the positions through lamda coordinates and back
 scenes["triclinic"] = tuple(t.replace("create_box 2 box", "create_box 2 box\nchange_box all triclinic")
                             for t in block_scene("cfl 0.3")) + ({},)
@@ -215,12 +219,12 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "triclinic",
+for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "turnbody", "triclinic",
               "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene in ("bonetlok", "staggered", "recon"):
+        if scene in ("bonetlok", "staggered", "recon", "turnbody"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene == "triclinic":
             dr = {k: dr[k] for k in ("full", "split2", "balance")}

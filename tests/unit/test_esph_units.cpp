@@ -1,6 +1,7 @@
 // Unit tests of the LAMMPS-independent pieces of the ESPH package:
 // kernel, equation of state, Jaumann stress rate, contact rule, unit conversion.
 
+#include "esph_bodies.h"
 #include "esph_contact.h"
 #include "esph_eos.h"
 #include "esph_kernel.h"
@@ -406,6 +407,86 @@ TEST(Contact, RotateBySpin)
   const double none[3] = {0.0, 0.0, 0.0};
   rotate_by_spin(n, none, 1.0e-8);
   for (int d = 0; d < 3; d++) EXPECT_EQ(n[d], n0[d]);
+}
+
+// The rigid spin of a body (fix esph/boundary turn body): a cloud of particles of unequal
+// masses in a rigid motion v = V + omega x (x - c0) gives back omega from its sums
+// (esph_bodies.h's layout, built here as body_sums() builds them) to round-off, far from
+// the origin too; in 2d its z part; a line of particles the part normal to the line (a
+// line cannot turn about itself); one particle none.
+static void add_particle(double *s, double m, const double *x, const double *v)
+{
+  s[0] += m;
+  for (int d = 0; d < 3; d++) {
+    s[1 + d] += m * x[d];
+    s[4 + d] += m * v[d];
+  }
+  s[7] += m * (x[1] * v[2] - x[2] * v[1]);
+  s[8] += m * (x[2] * v[0] - x[0] * v[2]);
+  s[9] += m * (x[0] * v[1] - x[1] * v[0]);
+  s[10] += m * x[0] * x[0];
+  s[11] += m * x[1] * x[1];
+  s[12] += m * x[2] * x[2];
+  s[13] += m * x[0] * x[1];
+  s[14] += m * x[0] * x[2];
+  s[15] += m * x[1] * x[2];
+  s[16] += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+static void rigid_cloud(int n, int dim, double shift, const double *w, double *s)
+{
+  const double V[3] = {50.0, -3.0, 7.0}, c0[3] = {1.0e-3 + shift, -2.0e-3, 0.5e-3};
+  for (int k = 0; k < BODY_NSUM; k++) s[k] = 0.0;
+  unsigned r = 12345;
+  auto rnd = [&r]() {
+    r = r * 1103515245u + 12345u;
+    return ((r >> 8) & 0xffff) / 65536.0 - 0.5;
+  };
+  for (int i = 0; i < n; i++) {
+    const double x[3] = {c0[0] + 1.0e-3 * rnd(), c0[1] + (dim > 1 ? 2.0e-3 * rnd() : 0.0),
+                         c0[2] + (dim > 2 ? 0.7e-3 * rnd() : 0.0)};
+    const double r3[3] = {x[0] - c0[0], x[1] - c0[1], x[2] - c0[2]};
+    const double v[3] = {V[0] + w[1] * r3[2] - w[2] * r3[1], V[1] + w[2] * r3[0] - w[0] * r3[2],
+                         V[2] + w[0] * r3[1] - w[1] * r3[0]};
+    add_particle(s, 1.0e-8 * (1.0 + rnd()), x, v);
+  }
+}
+
+TEST(Bodies, RigidSpin)
+{
+  const double w[3] = {2.0e4, -1.3e4, 0.7e4};
+  double s[BODY_NSUM], om[3];
+  // 3d, near the origin and 0.1 m from it (50 body sizes)
+  for (double shift : {0.0, 0.1}) {
+    rigid_cloud(200, 3, shift, w, s);
+    const BodyMotion b = body_motion(s);
+    rigid_spin(b, 3, om);
+    for (int d = 0; d < 3; d++)
+      EXPECT_NEAR(om[d], w[d], (shift > 0.0 ? 1.0e-6 : 1.0e-10) * 2.0e4)
+          << "3d, shift " << shift << ", component " << d;
+    // the centre of mass moves with the rigid velocity field at its place
+    const double rc[3] = {b.c[0] - 1.0e-3 - shift, b.c[1] + 2.0e-3, b.c[2] - 0.5e-3};
+    EXPECT_NEAR(b.V[0], 50.0 + w[1] * rc[2] - w[2] * rc[1], 1.0e-9);
+  }
+  // 2d: the cloud in a plane z = const, a spin about z
+  const double wz[3] = {0.0, 0.0, 0.7e4};
+  rigid_cloud(100, 2, 0.0, wz, s);
+  rigid_spin(body_motion(s), 2, om);
+  EXPECT_EQ(om[0], 0.0);
+  EXPECT_EQ(om[1], 0.0);
+  EXPECT_NEAR(om[2], wz[2], 1.0e-10 * wz[2]);
+  // a line along x: the part of omega normal to it
+  rigid_cloud(50, 1, 0.0, w, s);
+  rigid_spin(body_motion(s), 3, om);
+  EXPECT_NEAR(om[0], 0.0, 1.0e-6);
+  EXPECT_NEAR(om[1], w[1], 1.0e-10 * 2.0e4);
+  EXPECT_NEAR(om[2], w[2], 1.0e-10 * 2.0e4);
+  // 1d and one particle: no spin
+  rigid_spin(body_motion(s), 1, om);
+  for (int d = 0; d < 3; d++) EXPECT_EQ(om[d], 0.0);
+  rigid_cloud(1, 3, 0.0, w, s);
+  rigid_spin(body_motion(s), 3, om);
+  for (int d = 0; d < 3; d++) EXPECT_EQ(om[d], 0.0);
 }
 
 TEST(Contact, NormalCone)

@@ -1,0 +1,114 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+// The motion of whole bodies (sets of real particles with one i_esph_body): mass, centre of
+// mass, its velocity, the angular momentum and second moment about it, and the rigid spin
+// omega = I^-1 L. Used by the angular momentum watch of fix esph/integrate
+// (esph_spin_watch.h) and by the boundary normals that turn with their body (fix
+// esph/boundary turn body).
+
+#ifndef LMP_ESPH_BODIES_H
+#define LMP_ESPH_BODIES_H
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <vector>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+class ESPHState;
+}    // namespace LAMMPS_NS
+
+namespace ESPH {
+
+// sums per body: m, m x (3), m v (3), m x cross v (3), m x x^T (xx yy zz xy xz yz),
+// m v.v / 2, with x unwrapped through the periodic images and taken from the box centre
+static constexpr int BODY_NSUM = 17;
+
+// the sums over the owned real particles in groupbit of each of the sorted bodies, on all
+// ranks (one MPI_Allreduce; collective); the velocity of atom i is vel[i][voff..voff+2]
+void body_sums(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::ESPHState *state, int groupbit,
+               const std::vector<int> &bodies, double *const *vel, int voff,
+               std::vector<double> &sum);
+
+struct BodyMotion {
+  double M;       // mass
+  double c[3];    // centre of mass
+  double V[3];    // its velocity
+  double L[3];    // angular momentum about it
+  double S[6];    // second moment about it, sum m r r^T (xx yy zz xy xz yz)
+  double Kcm;     // kinetic energy of the motion relative to the centre of mass
+};
+
+// the motion of a body from its BODY_NSUM sums (M = 0: no particles)
+inline BodyMotion body_motion(const double *s)
+{
+  BodyMotion b{};
+  b.M = s[0];
+  if (!(b.M > 0.0)) {
+    b.M = 0.0;
+    return b;
+  }
+  const double M = b.M;
+  double *c = b.c, *V = b.V;
+  for (int d = 0; d < 3; d++) {
+    c[d] = s[1 + d] / M;
+    V[d] = s[4 + d] / M;
+  }
+  // about the centre of mass: L = sum m x cross v - M c cross V, S = sum m x x^T - M c c^T
+  b.L[0] = s[7] - M * (c[1] * V[2] - c[2] * V[1]);
+  b.L[1] = s[8] - M * (c[2] * V[0] - c[0] * V[2]);
+  b.L[2] = s[9] - M * (c[0] * V[1] - c[1] * V[0]);
+  b.S[0] = std::max(0.0, s[10] - M * c[0] * c[0]);
+  b.S[1] = std::max(0.0, s[11] - M * c[1] * c[1]);
+  b.S[2] = std::max(0.0, s[12] - M * c[2] * c[2]);
+  b.S[3] = s[13] - M * c[0] * c[1];
+  b.S[4] = s[14] - M * c[0] * c[2];
+  b.S[5] = s[15] - M * c[1] * c[2];
+  b.Kcm = std::max(0.0, s[16] - 0.5 * M * (V[0] * V[0] + V[1] * V[1] + V[2] * V[2]));
+  return b;
+}
+
+// the spin of the rigid motion with the body's angular momentum, omega = I^-1 L with
+// I = tr(S) 1 - S; directions of a vanishing moment of inertia (a body that is a line
+// or one particle) do not turn; in 2d only about z, in 1d never
+inline void rigid_spin(const BodyMotion &b, int dimension, double omega[3])
+{
+  omega[0] = omega[1] = omega[2] = 0.0;
+  if (!(b.M > 0.0) || dimension < 2) return;
+  const double *S = b.S;
+  if (dimension == 2) {
+    const double Izz = S[0] + S[1];
+    if (Izz > 0.0) omega[2] = b.L[2] / Izz;
+    return;
+  }
+  const double tr = S[0] + S[1] + S[2];
+  Eigen::Matrix3d I;
+  I << tr - S[0], -S[3], -S[4], -S[3], tr - S[1], -S[5], -S[4], -S[5], tr - S[2];
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(I);
+  const Eigen::Vector3d lam = es.eigenvalues();
+  const Eigen::Vector3d L(b.L[0], b.L[1], b.L[2]);
+  // a principal moment below 1e-10 of the largest is a direction the body cannot turn
+  // about (the axis of a line of particles)
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; k++)
+    if (lam[k] > 1.0e-10 * lam[2]) {
+      const Eigen::Vector3d e = es.eigenvectors().col(k);
+      w += (e.dot(L) / lam[k]) * e;
+    }
+  for (int d = 0; d < 3; d++) omega[d] = w[d];
+}
+
+}    // namespace ESPH
+
+#endif
