@@ -31,19 +31,30 @@ class ESPHState;
 
 namespace ESPH {
 
-// sums per body: m, m x (3), m v (3), m x cross v (3), m x x^T (xx yy zz xy xz yz),
-// m v.v / 2, with x unwrapped through the periodic images and taken from the box centre
+// sums per body: m, m r (3), m v (3), m r cross v (3), m r r^T (xx yy zz xy xz yz),
+// m v.v / 2, with r = x - ref_B taken by the minimum image
 static constexpr int BODY_NSUM = 17;
 
+// a reference point of each of the sorted bodies (one of its real particles in groupbit,
+// 3 per body), and the extent of each body along the periodic directions as a fraction of
+// the box length, its particles taken to that point by the minimum image (collective): a
+// body with a span above 0.5 extends over more than half a period (it may span the box),
+// and the minimum image cannot make it whole
+void body_reference(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::ESPHState *state, int groupbit,
+                    const std::vector<int> &bodies, std::vector<double> &ref,
+                    std::vector<double> &span);
+
 // the sums over the owned real particles in groupbit of each of the sorted bodies, on all
-// ranks (one MPI_Allreduce; collective); the velocity of atom i is vel[i][voff..voff+2]
+// ranks (one MPI_Allreduce; collective), positions relative to ref, which then moves to
+// the centre of mass (the same on every rank); the velocity of atom i is
+// vel[i][voff..voff+2]
 void body_sums(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::ESPHState *state, int groupbit,
                const std::vector<int> &bodies, double *const *vel, int voff,
-               std::vector<double> &sum);
+               std::vector<double> &ref, std::vector<double> &sum);
 
 struct BodyMotion {
   double M;       // mass
-  double c[3];    // centre of mass
+  double c[3];    // centre of mass (from the reference point of the sums)
   double V[3];    // its velocity
   double L[3];    // angular momentum about it
   double S[6];    // second moment about it, sum m r r^T (xx yy zz xy xz yz)

@@ -22,7 +22,8 @@
 // change of its angular momentum over free intervals beyond TOL of its scale is warned
 // once per body, with the remedy. Not run where it cannot judge: without a contact rule,
 // or with another fix that may exert torques (fix esph/integrate's other_torques(): one that
-// adds forces, fix enforce2d excepted, or one that sets velocities: momentum, thermostats).
+// adds forces, fix enforce2d excepted, or one that sets velocities: momentum, thermostats);
+// nor for a body over more than half of a periodic box (esph_bodies.h: body_reference()).
 
 #ifndef LMP_ESPH_SPIN_WATCH_H
 #define LMP_ESPH_SPIN_WATCH_H
@@ -60,6 +61,7 @@ class ESPHSpinWatch {
     bigint since = 0;                 // step of that sample
   };
   std::vector<int> bodies;    // sorted body IDs watched
+  std::vector<double> ref;    // a point of each (esph_bodies.h: body_sums())
   std::vector<Ref> refs;
   std::set<int> hit;       // bodies in contact since the last sample
   std::set<int> warned;    // bodies warned about in this run

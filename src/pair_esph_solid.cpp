@@ -24,6 +24,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_bodies.h"
 #include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
@@ -676,24 +677,7 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
-  // fix esph/boundary turn body: the bodies of the run (body IDs do not change during one)
-  const FixESPHBoundary *bfix = boundary_fix();
-  turn_body = bfix && bfix->turns_with_body() && dim > 1;
-  turn_bodies.clear();
-  if (bfix && bfix->turns_with_body() && comm->me == 0) {
-    if (dim == 1)
-      error->warning(FLERR,
-                     "Fix esph/boundary turn body has no effect with pair esph/solid dimension "
-                     "1 (the normals are +-x and never turn): drop it");
-    else if (domain->xperiodic || domain->yperiodic || (domain->zperiodic && dim == 3))
-      error->warning(FLERR,
-                     "Fix esph/boundary turn body in a periodic box: a body that spans a "
-                     "periodic direction has no rigid rotation (its spin is taken from the "
-                     "particles of one period as unwrapped); use turn spin for such bodies");
-  }
-  if (turn_body)
-    for (const auto &kv : ESPHCheck::body_counts(lmp, state, group->bitmask[0]))
-      turn_bodies.push_back(kv.first);
+  init_turn();
   init_recon();
   drop_unused_state();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
@@ -1141,6 +1125,57 @@ double PairESPHSolid::boundary_spacing() const
 {
   const FixESPHBoundary *bfix = boundary_fix();
   return bfix ? bfix->get_spacing() : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   fix esph/boundary turn body: the bodies in the groups of the fixes with
+   turn body (body IDs do not change during a run), less those that extend
+   over more than half of a periodic box, and a reference point of each
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_turn()
+{
+  turn_body = 0;
+  turn_bodies.clear();
+  turn_ref.clear();
+  std::vector<int> bodies;
+  int any = 0;
+  for (auto *f : modify->get_fix_by_style("^esph/boundary$")) {
+    const auto *bf = dynamic_cast<FixESPHBoundary *>(f);
+    if (!bf || !bf->turns_with_body()) continue;
+    any = 1;
+    if (dim > 1)
+      for (const auto &kv : ESPHCheck::body_counts(lmp, state, bf->groupbit))
+        bodies.push_back(kv.first);
+  }
+  if (any && dim == 1 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/boundary turn body has no effect with pair esph/solid dimension 1 "
+                   "(the normals are +-x and never turn): drop it");
+  if (bodies.empty()) return;
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  std::vector<double> ref, span;
+  ESPH::body_reference(lmp, state, group->bitmask[0], bodies, ref, span);
+  std::vector<int> wide;
+  for (size_t k = 0; k < bodies.size(); k++) {
+    if (span[k] > 0.5) {
+      wide.push_back(bodies[k]);
+      continue;
+    }
+    turn_bodies.push_back(bodies[k]);
+    turn_ref.insert(turn_ref.end(), ref.begin() + 3 * k, ref.begin() + 3 * k + 3);
+  }
+  if (!wide.empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/boundary turn body: {} bod{} ({}{}) extend{} over more than half "
+                   "of a periodic box length and {} no rigid rotation (spanning the box, or "
+                   "too long for the minimum image): {} normals turn with the interpolated "
+                   "spin (turn spin)",
+                   wide.size(), wide.size() > 1 ? "ies" : "y", wide[0],
+                   wide.size() > 1 ? ", ..." : "", wide.size() > 1 ? "" : "s",
+                   wide.size() > 1 ? "have" : "has", wide.size() > 1 ? "their" : "its");
+  turn_body = !turn_bodies.empty();
 }
 
 /* ----------------------------------------------------------------------

@@ -187,6 +187,7 @@ class PairESPHSolid : public Pair {
   // normals, instead of the spin interpolated around each boundary particle
   int turn_body;
   std::vector<int> turn_bodies;
+  std::vector<double> turn_ref;    // a point of each, moving with its centre of mass
 
   // per-atom contact output for compute esph/atom, only while one asks for it (its init()
   // sets the flag, init_style() clears it): interacting cross-body pairs and the sum of
@@ -218,6 +219,7 @@ class PairESPHSolid : public Pair {
   double boundary_spacing() const;
   void hoist();
   void finalize(int eflag);
+  void init_turn();
   void turn_with_bodies();
   void compute_normals();
   void store_bnd_gap(int);

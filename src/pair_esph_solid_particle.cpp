@@ -429,7 +429,7 @@ void PairESPHSolid::finalize(int eflag)
 void PairESPHSolid::turn_with_bodies()
 {
   std::vector<double> sum;
-  ESPH::body_sums(lmp, state, group->bitmask[0], turn_bodies, hq, Q_V, sum);
+  ESPH::body_sums(lmp, state, group->bitmask[0], turn_bodies, hq, Q_V, turn_ref, sum);
   const int nb = turn_bodies.size();
   std::vector<double> omega(3 * nb);
   for (int k = 0; k < nb; k++)

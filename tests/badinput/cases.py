@@ -489,9 +489,18 @@ CASES = [
     ("fb_turn_spin", [K("fix_bnd", " turn spin")], "same"),
     ("fb_turn_body", [K("fix_bnd", " turn body")], "runs"),
     ("fb_turn_body_np2", [K("fix_bnd", " turn body")], "runs", 2),
-    # a body across a periodic boundary has no rigid rotation (blocks in a box periodic in z)
+    # blocks in a box periodic in z, clear of its z ends: rigid spins as without periodicity
     ("fb_turn_body_periodic", [R("boundary", "boundary f f p"), K("fix_bnd", " turn body")],
-     "warning:turn body in a periodic box"),
+     "runs"),
+    # blocks that fill the z period (infinite in z) have no rigid rotation: interpolated spin
+    ("fb_turn_body_spanning", [R("boundary", "boundary f f p"),
+                               R("box", "region box block -0.0006 0.0006 -0.0004 0.0004 "
+                                 "-0.0002 0.0002"), K("fix_bnd", " turn body")],
+     "warning:extend over more than half of a periodic box length"),
+    ("fb_turn_body_spanning_np2", [R("boundary", "boundary f f p"),
+                                   R("box", "region box block -0.0006 0.0006 -0.0004 0.0004 "
+                                     "-0.0002 0.0002"), K("fix_bnd", " turn body")],
+     "warning:extend over more than half of a periodic box length", 2),
     ("fb_missing", [D("fix_bnd")], "error:requires fix esph/boundary"),
     ("fb_given_without_particles", [R("fix_bnd", "fix bnd all esph/boundary given")],
      "error:has no boundary particles"),
