@@ -117,22 +117,7 @@ void ESPH::body_sums(LAMMPS *lmp, ESPHState *state, int groupbit, const std::vec
     double *s = local.data() + BODY_NSUM * k;
     double xu[3] = {x[i][0] - ref[3 * k], x[i][1] - ref[3 * k + 1], x[i][2] - ref[3 * k + 2]};
     if (periodic) domain->minimum_image(FLERR, xu);
-    const double *vi = vel[i] + voff;
-    s[0] += m;
-    for (int d = 0; d < 3; d++) {
-      s[1 + d] += m * xu[d];
-      s[4 + d] += m * vi[d];
-    }
-    s[7] += m * (xu[1] * vi[2] - xu[2] * vi[1]);
-    s[8] += m * (xu[2] * vi[0] - xu[0] * vi[2]);
-    s[9] += m * (xu[0] * vi[1] - xu[1] * vi[0]);
-    s[10] += m * xu[0] * xu[0];
-    s[11] += m * xu[1] * xu[1];
-    s[12] += m * xu[2] * xu[2];
-    s[13] += m * xu[0] * xu[1];
-    s[14] += m * xu[0] * xu[2];
-    s[15] += m * xu[1] * xu[2];
-    s[16] += 0.5 * m * (vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+    add_body_sum(s, m, xu, vel[i] + voff);
   }
   if (nb) MPI_Allreduce(local.data(), sum.data(), BODY_NSUM * nb, MPI_DOUBLE, MPI_SUM, lmp->world);
   // the reference follows the centre of mass (the same on every rank)

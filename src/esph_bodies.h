@@ -35,6 +35,27 @@ namespace ESPH {
 // m v.v / 2, with r = x - ref_B taken by the minimum image
 static constexpr int BODY_NSUM = 17;
 
+// one particle (mass m, position r from the body's reference point, velocity v) added to
+// its body's BODY_NSUM sums s
+inline void add_body_sum(double *s, double m, const double *r, const double *v)
+{
+  s[0] += m;
+  for (int d = 0; d < 3; d++) {
+    s[1 + d] += m * r[d];
+    s[4 + d] += m * v[d];
+  }
+  s[7] += m * (r[1] * v[2] - r[2] * v[1]);
+  s[8] += m * (r[2] * v[0] - r[0] * v[2]);
+  s[9] += m * (r[0] * v[1] - r[1] * v[0]);
+  s[10] += m * r[0] * r[0];
+  s[11] += m * r[1] * r[1];
+  s[12] += m * r[2] * r[2];
+  s[13] += m * r[0] * r[1];
+  s[14] += m * r[0] * r[2];
+  s[15] += m * r[1] * r[2];
+  s[16] += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
 // a reference point of each of the sorted bodies (one of its real particles in groupbit,
 // 3 per body), and the extent of each body along the periodic directions as a fraction of
 // the box length, its particles taken to that point by the minimum image (collective): a

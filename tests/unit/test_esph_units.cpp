@@ -411,28 +411,9 @@ TEST(Contact, RotateBySpin)
 
 // The rigid spin of a body (fix esph/boundary turn body): a cloud of particles of unequal
 // masses in a rigid motion v = V + omega x (x - c0) gives back omega from its sums
-// (esph_bodies.h's layout, built here as body_sums() builds them) to round-off, far from
+// (add_body_sum(), as body_sums() builds them) to round-off, far from
 // the origin too; in 2d its z part; a line of particles the part normal to the line (a
 // line cannot turn about itself); one particle none.
-static void add_particle(double *s, double m, const double *x, const double *v)
-{
-  s[0] += m;
-  for (int d = 0; d < 3; d++) {
-    s[1 + d] += m * x[d];
-    s[4 + d] += m * v[d];
-  }
-  s[7] += m * (x[1] * v[2] - x[2] * v[1]);
-  s[8] += m * (x[2] * v[0] - x[0] * v[2]);
-  s[9] += m * (x[0] * v[1] - x[1] * v[0]);
-  s[10] += m * x[0] * x[0];
-  s[11] += m * x[1] * x[1];
-  s[12] += m * x[2] * x[2];
-  s[13] += m * x[0] * x[1];
-  s[14] += m * x[0] * x[2];
-  s[15] += m * x[1] * x[2];
-  s[16] += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
 static void rigid_cloud(int n, int dim, double shift, const double *w, double *s)
 {
   const double V[3] = {50.0, -3.0, 7.0}, c0[3] = {1.0e-3 + shift, -2.0e-3, 0.5e-3};
@@ -448,7 +429,7 @@ static void rigid_cloud(int n, int dim, double shift, const double *w, double *s
     const double r3[3] = {x[0] - c0[0], x[1] - c0[1], x[2] - c0[2]};
     const double v[3] = {V[0] + w[1] * r3[2] - w[2] * r3[1], V[1] + w[2] * r3[0] - w[0] * r3[2],
                          V[2] + w[0] * r3[1] - w[1] * r3[0]};
-    add_particle(s, 1.0e-8 * (1.0 + rnd()), x, v);
+    add_body_sum(s, 1.0e-8 * (1.0 + rnd()), x, v);
   }
 }
 
