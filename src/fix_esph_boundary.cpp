@@ -70,6 +70,10 @@ static constexpr double REGION_REACH = 3.0;
 // REGION_NUDGE spacings out along its own normal
 static constexpr double REGION_ON = 1.0e-6;
 static constexpr double REGION_NUDGE = 0.25;
+// ... a region other than a sphere that turns a generated normal by more than REGION_EDGE
+// degrees has edges where the nearer face's normal replaced the edge's (a cylinder's
+// rims): warned (fix_esph_boundary.rst, "Normals from regions")
+static constexpr double REGION_EDGE = 40.0;
 // the spacing keyword against the median nearest-neighbour distance of the real particles:
 // a warning beyond SPACING_WARN, an error beyond SPACING_ERROR (at twice the spacing the
 // surface detection marks inner layers and puts boundary particles inside the body; at
@@ -757,7 +761,7 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
   }
   double **x = atom->x;
   const double cutoff = REGION_REACH * spacing;
-  bigint nset = 0, nfar = 0, nnone = 0;
+  bigint nset = 0, nfar = 0, nnone = 0, nedge = 0;
   double maxturn = 0.0;
   const int n = src.size();
   for (int k = 0; k < n; k++) {
@@ -800,13 +804,15 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
     const double nr[3] = {sign * ct.delx / len, sign * ct.dely / len, sign * ct.delz / len};
     double *nk = &bn[3 * k];
     const double dot = nk[0] * nr[0] + nk[1] * nr[1] + nk[2] * nr[2];
-    maxturn = MAX(maxturn, acos(MAX(-1.0, MIN(1.0, dot))));
+    const double turn = acos(MAX(-1.0, MIN(1.0, dot)));
+    maxturn = MAX(maxturn, turn);
+    if (strcmp(region->style, "sphere") != 0 && turn > REGION_EDGE * MY_PI / 180.0) nedge++;
     for (int d = 0; d < 3; d++) nk[d] = nr[d];
     nset++;
     if (ct.r > spacing) nfar++;
   }
-  bigint loc[3] = {nset, nfar, nnone}, all[3];
-  MPI_Allreduce(loc, all, 3, MPI_LMP_BIGINT, MPI_SUM, world);
+  bigint loc[4] = {nset, nfar, nnone, nedge}, all[4];
+  MPI_Allreduce(loc, all, 4, MPI_LMP_BIGINT, MPI_SUM, world);
   double turn;
   MPI_Allreduce(&maxturn, &turn, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me == 0) {
@@ -822,6 +828,14 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
                      "one the body was created from, where the body still is, and a body cut by "
                      "a periodic boundary needs a box a whole number of spacings long",
                      all[1], all[2], REGION_REACH);
+    if (all[3] > 0)
+      error->warning(FLERR,
+                     "Fix esph/boundary: the regions' normals turned {} boundary particles by "
+                     "more than {} degrees: they lie at edges of a region (a cylinder's rims), "
+                     "where the nearer face's normal replaces the edge's, and the contact gaps "
+                     "there fail (two cylinders side on touch at once); use the generated "
+                     "normals (no region keyword) for bodies with edges",
+                     all[3], REGION_EDGE);
   }
 }
 
