@@ -6,7 +6,7 @@ Scenes: the 3D rod impact at 0.25 mm (contact from the first step; with newton o
 ranks; in 1D and 2D; with an initial gap of
 one spacing, where boundary particles merge their surface gaps across threads; with the
 options visc/switch, visc/recon, heat, hvar, xsph, artstress and gradient bonet/lok, which
-add columns to the sums), three bodies in a row (compute esph/contact, one row per
+add columns to the sums; off-axis with fix esph/boundary turn body), three bodies in a row (compute esph/contact, one row per
 interface), the per-atom contact force of compute esph/atom, the staggered scheme, and an
 oblique block impact split into two runs and continued from a restart file in a new process.
 
@@ -112,6 +112,12 @@ st = dict(rod, int_extra="scheme staggered")
 st0 = et.production_thermo(et.run(a, ROD, st, log="log.st.t0"))
 compare("rod, scheme staggered: 2 threads vs none", st0,
         et.production_thermo(et.run(a, ROD, st, log="log.st.t2", flags=omp(2))))
+# fix esph/boundary turn body (the bodies' rigid spins, one serial sum after the threaded
+# pass), off-axis so that the bodies turn
+tb = dict(rod, bnd_extra="turn body", yoff=0.5)
+tb0 = et.production_thermo(et.run(a, ROD, tb, log="log.tb.t0"))
+compare("off-axis rod, fix esph/boundary turn body: 2 threads vs none", tb0,
+        et.production_thermo(et.run(a, ROD, tb, log="log.tb.t2", flags=omp(2))))
 cone = {"dx": 0.25, "fit": 16, "smooth": 1.0, "normal": "cone"}
 OBL = "oblique_rod/in.oblique_rod"
 cn0 = et.production_thermo(et.run(a, OBL, cone, log="log.cone.t0"))
