@@ -14,6 +14,7 @@
 #include "esph_bodies.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "esph_state.h"
 
@@ -34,15 +35,13 @@ static int body_index(ESPHState *state, const int *mask, int groupbit,
                       const std::vector<int> &bodies, int i)
 {
   if (!(mask[i] & groupbit) || !(state->rmass[i] > 0.0)) return -1;
-  const auto it = std::lower_bound(bodies.begin(), bodies.end(), state->body[i]);
-  return (it == bodies.end() || *it != state->body[i]) ? -1 : (int) (it - bodies.begin());
+  return ESPH::body_slot(bodies, state->body[i]);
 }
 
 /* ---------------------------------------------------------------------- */
 
-void ESPH::body_reference(LAMMPS *lmp, ESPHState *state, int groupbit,
-                          const std::vector<int> &bodies, std::vector<double> &ref,
-                          std::vector<double> &span)
+std::vector<int> ESPH::body_reference(LAMMPS *lmp, ESPHState *state, int groupbit,
+                                      std::vector<int> &bodies, std::vector<double> &ref)
 {
   const int nb = bodies.size();
   Atom *atom = lmp->atom;
@@ -50,9 +49,7 @@ void ESPH::body_reference(LAMMPS *lmp, ESPHState *state, int groupbit,
   double **x = atom->x;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  int me, nprocs;
-  MPI_Comm_rank(lmp->world, &me);
-  MPI_Comm_size(lmp->world, &nprocs);
+  const int me = lmp->comm->me, nprocs = lmp->comm->nprocs;
   // the first particle of each body on the lowest rank that has one
   std::vector<int> first(nb, -1), mine(nb, nprocs), owner(nb, nprocs);
   for (int i = 0; i < nlocal; i++) {
@@ -83,13 +80,25 @@ void ESPH::body_reference(LAMMPS *lmp, ESPHState *state, int groupbit,
     }
   }
   if (nb) MPI_Allreduce(ext.data(), gext.data(), 6 * nb, MPI_DOUBLE, MPI_MAX, lmp->world);
-  span.assign(nb, 0.0);
   const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
   const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
-  for (int k = 0; k < nb; k++)
+  std::vector<int> kept, wide;
+  std::vector<double> kref;
+  for (int k = 0; k < nb; k++) {
+    double span = 0.0;
     for (int d = 0; d < 3; d++)
       if (per[d] && gext[6 * k + d] > -BIG)
-        span[k] = std::max(span[k], (gext[6 * k + d] + gext[6 * k + 3 + d]) / prd[d]);
+        span = std::max(span, (gext[6 * k + d] + gext[6 * k + 3 + d]) / prd[d]);
+    if (span > 0.5) {
+      wide.push_back(bodies[k]);
+      continue;
+    }
+    kept.push_back(bodies[k]);
+    kref.insert(kref.end(), ref.begin() + 3 * k, ref.begin() + 3 * k + 3);
+  }
+  bodies.swap(kept);
+  ref.swap(kref);
+  return wide;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -56,14 +56,20 @@ inline void add_body_sum(double *s, double m, const double *r, const double *v)
   s[16] += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
+// the index of a body ID in the sorted bodies, or -1
+inline int body_slot(const std::vector<int> &bodies, int id)
+{
+  const auto it = std::lower_bound(bodies.begin(), bodies.end(), id);
+  return (it == bodies.end() || *it != id) ? -1 : (int) (it - bodies.begin());
+}
+
 // a reference point of each of the sorted bodies (one of its real particles in groupbit,
-// 3 per body), and the extent of each body along the periodic directions as a fraction of
-// the box length, its particles taken to that point by the minimum image (collective): a
-// body with a span above 0.5 extends over more than half a period (it may span the box),
-// and the minimum image cannot make it whole
-void body_reference(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::ESPHState *state, int groupbit,
-                    const std::vector<int> &bodies, std::vector<double> &ref,
-                    std::vector<double> &span);
+// 3 per body), its particles taken to it by the minimum image (collective). A body that
+// extends over more than half of a periodic box length (it spans the box, or the minimum
+// image cannot make it whole) has no motion of its own: it is removed from bodies and
+// returned
+std::vector<int> body_reference(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::ESPHState *state, int groupbit,
+                                std::vector<int> &bodies, std::vector<double> &ref);
 
 // the sums over the owned real particles in groupbit of each of the sorted bodies, on all
 // ranks (one MPI_Allreduce; collective), positions relative to ref, which then moves to

@@ -37,17 +37,7 @@ void ESPHSpinWatch::setup(LAMMPS *lmp, ESPHState *state, int groupbit)
   hit.clear();
   // a body over more than half a periodic box has no angular momentum of its own (it
   // spans the box, or the minimum image cannot make it whole): not watched
-  std::vector<double> span;
-  ESPH::body_reference(lmp, state, groupbit, bodies, ref, span);
-  std::vector<int> kept;
-  std::vector<double> kref;
-  for (size_t k = 0; k < bodies.size(); k++)
-    if (span[k] <= 0.5) {
-      kept.push_back(bodies[k]);
-      kref.insert(kref.end(), ref.begin() + 3 * k, ref.begin() + 3 * k + 3);
-    }
-  bodies.swap(kept);
-  ref.swap(kref);
+  ESPH::body_reference(lmp, state, groupbit, bodies, points);
   refs.assign(bodies.size(), Ref());
 }
 
@@ -59,7 +49,7 @@ void ESPHSpinWatch::step(LAMMPS *lmp, ESPHState *state, int groupbit, bigint nti
   if (ntimestep % SAMPLE != 0 || bodies.empty()) return;
   const int nb = bodies.size();
   std::vector<double> sum;
-  ESPH::body_sums(lmp, state, groupbit, bodies, lmp->atom->v, 0, ref, sum);
+  ESPH::body_sums(lmp, state, groupbit, bodies, lmp->atom->v, 0, points, sum);
 
   for (int k = 0; k < nb; k++) {
     Ref &r = refs[k];

@@ -60,8 +60,8 @@ class ESPHSpinWatch {
     double scale = 0.0;               // its scale (see step())
     bigint since = 0;                 // step of that sample
   };
-  std::vector<int> bodies;    // sorted body IDs watched
-  std::vector<double> ref;    // a point of each (esph_bodies.h: body_sums())
+  std::vector<int> bodies;       // sorted body IDs watched
+  std::vector<double> points;    // a point of each, for the sums (esph_bodies.h)
   std::vector<Ref> refs;
   std::set<int> hit;       // bodies in contact since the last sample
   std::set<int> warned;    // bodies warned about in this run

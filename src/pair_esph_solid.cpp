@@ -1155,17 +1155,9 @@ void PairESPHSolid::init_turn()
   if (bodies.empty()) return;
   std::sort(bodies.begin(), bodies.end());
   bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
-  std::vector<double> ref, span;
-  ESPH::body_reference(lmp, state, group->bitmask[0], bodies, ref, span);
-  std::vector<int> wide;
-  for (size_t k = 0; k < bodies.size(); k++) {
-    if (span[k] > 0.5) {
-      wide.push_back(bodies[k]);
-      continue;
-    }
-    turn_bodies.push_back(bodies[k]);
-    turn_ref.insert(turn_ref.end(), ref.begin() + 3 * k, ref.begin() + 3 * k + 3);
-  }
+  const std::vector<int> wide =
+      ESPH::body_reference(lmp, state, group->bitmask[0], bodies, turn_ref);
+  turn_bodies.swap(bodies);
   if (!wide.empty() && comm->me == 0)
     error->warning(FLERR,
                    "Fix esph/boundary turn body: {} bod{} ({}{}) extend{} over more than half "

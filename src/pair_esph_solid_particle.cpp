@@ -438,10 +438,10 @@ void PairESPHSolid::turn_with_bodies()
   const int *body = state->body;
   for (int i = 0; i < atom->nlocal; i++) {
     if (rmass[i] > 0.0) continue;
-    const auto it = std::lower_bound(turn_bodies.begin(), turn_bodies.end(), body[i]);
-    if (it == turn_bodies.end() || *it != body[i]) continue;
+    const int k = ESPH::body_slot(turn_bodies, body[i]);
+    if (k < 0) continue;
     // bspin holds W = [omega]x as W_xy, W_xz, W_yz
-    const double *w = &omega[3 * (it - turn_bodies.begin())];
+    const double *w = &omega[3 * k];
     bspin[i][0] = -w[2];
     bspin[i][1] = w[1];
     bspin[i][2] = -w[0];
