@@ -70,9 +70,13 @@ static constexpr double REGION_REACH = 3.0;
 // REGION_NUDGE spacings out along its own normal
 static constexpr double REGION_ON = 1.0e-6;
 static constexpr double REGION_NUDGE = 0.25;
+// ... a boundary particle whose real particle lies within REGION_EDGE_REACH spacings of
+// two or more of its region's faces (a cylinder's rim, a block's edge) sits at an edge,
+// where the nearer face's normal would replace the edge's: it keeps its generated normal
+static constexpr double REGION_EDGE_REACH = 1.0;
 // ... a region other than a sphere that turns a generated normal by more than REGION_EDGE
-// degrees has edges where the nearer face's normal replaced the edge's (a cylinder's
-// rims): warned (fix_esph_boundary.rst, "Normals from regions")
+// degrees elsewhere does not describe the body's surface there: warned
+// (fix_esph_boundary.rst, "Normals from regions")
 static constexpr double REGION_EDGE = 40.0;
 // the spacing keyword against the median nearest-neighbour distance of the real particles:
 // a warning beyond SPACING_WARN, an error beyond SPACING_ERROR (at twice the spacing the
@@ -743,7 +747,11 @@ std::vector<double> FixESPHBoundary::halo_exchange(const std::vector<double> &mi
    normal of that region's surface at the surface point nearest to the
    boundary particle, i.e. the gradient of the distance to the surface:
    radial for a sphere, a face's normal beside it, rounded over an edge or
-   a corner. The positions stay the ones generate() made. A boundary
+   a corner. The positions stay the ones generate() made. At an edge of
+   the region (its real particle within a spacing of two of the region's
+   faces: a cylinder's rim, a block's edge) a boundary particle keeps its
+   generated normal: the nearer face's normal would replace the edge's
+   there, and two cylinders side on would touch at once. A boundary
    particle with no surface point of its region within 3 spacings keeps
    its normal; those, and those more than a spacing from the surface, are
    counted for a warning (the region does not describe that body's surface)
@@ -761,7 +769,7 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
   }
   double **x = atom->x;
   const double cutoff = REGION_REACH * spacing;
-  bigint nset = 0, nfar = 0, nnone = 0, nedge = 0;
+  bigint nset = 0, nfar = 0, nnone = 0, nedge = 0, nkept = 0;
   double maxturn = 0.0;
   const int n = src.size();
   for (int k = 0; k < n; k++) {
@@ -773,6 +781,15 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
         break;
       }
     if (!region) continue;
+    // at an edge of the region: the generated normal (two faces within reach of the real
+    // particle inside)
+    {
+      double p[3] = {xs[0], xs[1], xs[2]};
+      if (region->surface_interior(p, REGION_EDGE_REACH * spacing) >= 2) {
+        nkept++;
+        continue;
+      }
+    }
     // the nearest surface point: from outside the region, or from inside (a boundary
     // particle of a staircase can lie inside the region it was cut from); a particle on
     // the surface itself (a lattice face, e.g. of touching blocks) is looked at from a
@@ -811,15 +828,15 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
     nset++;
     if (ct.r > spacing) nfar++;
   }
-  bigint loc[4] = {nset, nfar, nnone, nedge}, all[4];
-  MPI_Allreduce(loc, all, 4, MPI_LMP_BIGINT, MPI_SUM, world);
+  bigint loc[5] = {nset, nfar, nnone, nedge, nkept}, all[5];
+  MPI_Allreduce(loc, all, 5, MPI_LMP_BIGINT, MPI_SUM, world);
   double turn;
   MPI_Allreduce(&maxturn, &turn, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me == 0) {
     utils::logmesg(lmp,
                    "Fix esph/boundary: {} boundary particles took the normals of region(s) {} "
-                   "(turned by up to {:.3g} degrees)\n",
-                   all[0], utils::join_words(region_ids, " "), turn * 180.0 / MY_PI);
+                   "(turned by up to {:.3g} degrees), {} at the regions' edges kept their own\n",
+                   all[0], utils::join_words(region_ids, " "), turn * 180.0 / MY_PI, all[4]);
     if (all[1] > 0 || all[2] > 0)
       error->warning(FLERR,
                      "Fix esph/boundary: {} boundary particles lie more than a spacing from the "
@@ -831,10 +848,9 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
     if (all[3] > 0)
       error->warning(FLERR,
                      "Fix esph/boundary: the regions' normals turned {} boundary particles by "
-                     "more than {} degrees: they lie at edges of a region (a cylinder's rims), "
-                     "where the nearer face's normal replaces the edge's, and the contact gaps "
-                     "there fail (two cylinders side on touch at once); use the generated "
-                     "normals (no region keyword) for bodies with edges",
+                     "more than {} degrees from their generated normals away from the regions' "
+                     "edges: a region there does not follow the surface of the body cut from it "
+                     "(check the region, or use the generated normals: no region keyword)",
                      all[3], REGION_EDGE);
   }
 }
