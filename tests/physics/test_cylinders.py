@@ -11,7 +11,7 @@ z (issue 12: a touch test that holds on faces, edges and corners).
   and left with an axial (z) momentum of 4.5e-2 of the impact momentum (R/dx = 5);
 - at R/dx = 15 the regions' normals against the generated ones (lateral momentum 5.5e-4
   against 2.8e-3) and np 2 against np 1;
-- fit 8 alone (a sphere fitted to the boundary particles) on a cylinder, reported: 1.4e-2.
+- fit 8 alone (the surface fit of the generated normals) on a cylinder, reported: 1.4e-2.
 About 1.5 minutes."""
 import os
 
@@ -74,6 +74,6 @@ for R, tend in ((1.0, 10.0), (3.0, 14.0)):
                "round-off")
         fit = case(f"fit8_R{R:g}", R=R, tend=tend, fit=8)
         c.less(f"{lab}, fit 8 alone: lateral momentum / axial (finding)", abs(fit["p1y_rel"]),
-               0.03, "measured 1.4e-2, five times the generated normals': a sphere fitted to a "
-               "cylinder's side tilts the normals of the contact line (doc/hard_cases.md 4)")
+               0.03, "measured 1.4e-2, five times the generated normals': the fit tilts the "
+               "normals of the contact line (doc/hard_cases.md 4)")
 c.done()
