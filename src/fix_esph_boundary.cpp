@@ -782,10 +782,18 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
       }
     if (!region) continue;
     // at an edge of the region: the generated normal (two faces within reach of the real
-    // particle inside)
+    // particle inside; in 2d only the faces across the plane count, the region's z faces
+    // bound the plane, not the body)
     {
       double p[3] = {xs[0], xs[1], xs[2]};
-      if (region->surface_interior(p, REGION_EDGE_REACH * spacing) >= 2) {
+      const int nc = region->surface_interior(p, REGION_EDGE_REACH * spacing);
+      int nfaces = 0;
+      for (int c = 0; c < nc; c++) {
+        const auto &ct = region->contact[c];
+        const double len2 = ct.delx * ct.delx + ct.dely * ct.dely + ct.delz * ct.delz;
+        if (domain->dimension == 3 || ct.delz * ct.delz <= 0.25 * len2) nfaces++;
+      }
+      if (nfaces >= 2) {
         nkept++;
         continue;
       }

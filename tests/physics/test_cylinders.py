@@ -11,9 +11,15 @@ z (issue 12: a touch test that holds on faces, edges and corners).
   and left with an axial (z) momentum of 4.5e-2 of the impact momentum (R/dx = 5);
 - at R/dx = 15 the regions' normals against the generated ones (lateral momentum 5.5e-4
   against 2.8e-3) and np 2 against np 1;
-- fit 8 alone (the surface fit of the generated normals) on a cylinder, reported: 1.4e-2.
+- fit 8 alone (the surface fit of the generated normals) on a cylinder, reported: 1.4e-2;
+- in 2d the region's z faces bound the plane, not the bodies: a disc (a cylinder region
+  along z) takes the radial normals, only a block's corners keep their own (before, every
+  boundary particle of a 2d body counted as at an edge and kept its own normal).
 About 1.5 minutes."""
 import os
+import re
+
+import numpy as np
 
 import esphtest as et
 
@@ -76,4 +82,48 @@ for R, tend in ((1.0, 10.0), (3.0, 14.0)):
         c.less(f"{lab}, fit 8 alone: lateral momentum / axial (finding)", abs(fit["p1y_rel"]),
                0.03, "measured 1.4e-2, five times the generated normals': the fit tilts the "
                "normals of the contact line (doc/hard_cases.md 4)")
+
+# --- 2d: a disc R = 1 mm and a block 1 x 1 mm beside it, 0.1 mm, the regions' z faces half
+# a spacing from the plane; the lattice offset (0.3, 0.2)
+D2 = """units si
+dimension 2
+atom_style atomic
+atom_modify map array
+boundary f f p
+region box block -3e-3 3e-3 -3e-3 3e-3 -0.5e-4 0.5e-4
+create_box 1 box
+lattice sq 1e-4 origin 0.3 0.2 0
+region d cylinder z 0 0 1e-3 -0.5e-4 0.5e-4 units box
+region b block 1.2e-3 2.2e-3 -0.5e-3 0.5e-3 -0.5e-4 0.5e-4 units box
+create_atoms 1 region d
+create_atoms 1 region b
+group d region d
+group b region b
+pair_style esph/solid 1e-4 dimension 2
+pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
+fix int all esph/integrate
+set group all mass 7.85e-5
+set group d i_esph_body 1
+set group b i_esph_body 2
+fix bnd all esph/boundary spacing 1e-4 region d region b
+neighbor 2e-5 bin
+run 0
+variable bm atom mass==0
+group bnd variable bm
+write_dump bnd custom bnd2d.dump id i_esph_body x y z d2_esph_n[1] d2_esph_n[2] d2_esph_n[3] &
+  modify sort id format float %.17g
+"""
+log = et.run(a, et.write_input(a, "in.disc2d", D2), log="log.disc2d")
+m = re.search(r"(\d+) boundary particles took the normals of region\(s\) d b .* (\d+) at the "
+              r"regions' edges kept their own", log)
+c.true("2d: the regions' normals set (log line)", m is not None, "fix esph/boundary region")
+bd = np.loadtxt(os.path.join(a.workdir, "bnd2d.dump"), skiprows=9)
+disc = bd[bd[:, 1] == 1]
+rr = np.hypot(disc[:, 2], disc[:, 3])
+err = np.hypot(disc[:, 5] - disc[:, 2] / rr, disc[:, 6] - disc[:, 3] / rr).max()
+c.less("2d disc: normals against the radial direction", err, 1e-12,
+       "the region's normal at the nearest surface point: exact (kept first normals are off "
+       "by up to 30 degrees)")
+c.near("2d: boundary particles that kept their own normals (the block's corners)",
+       int(m.group(2)) if m else -1, 4, 0, "one per corner of the block; none on the disc")
 c.done()
