@@ -41,6 +41,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -73,7 +74,15 @@ static constexpr double REGION_NUDGE = 0.25;
 // ... a boundary particle whose real particle lies within REGION_EDGE_REACH spacings of
 // two or more of its region's faces (a cylinder's rim, a block's edge) sits at an edge,
 // where the nearer face's normal would replace the edge's: it keeps its generated normal
-static constexpr double REGION_EDGE_REACH = 1.0;
+static constexpr double REGION_EDGE_REACH = 0.999;
+// ... two faces count as an edge if their normals are more than 30 degrees from parallel
+// and from antiparallel (the two faces of a thin wall are no edge)
+static constexpr double REGION_EDGE_COS = 0.8660254037844386;
+// ... a region's contact is checked this many spacings on either side of its surface point
+static constexpr double REGION_CHECK = 1.0e-3;
+// ... in 2d a contact whose direction is more than this far (sin of 30 degrees) out of the
+// plane is one of the region's z faces, which bound the plane, not the body
+static constexpr double REGION_PLANE_SIN = 0.5;
 // ... a region other than a sphere that turns a generated normal by more than REGION_EDGE
 // degrees elsewhere does not describe the body's surface there: warned
 // (fix_esph_boundary.rst, "Normals from regions")
@@ -148,6 +157,12 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
       Region *region = domain->get_region_by_id(arg[iarg + 1]);
       if (!region)
         error->all(FLERR, iarg + 1, "Fix esph/boundary region {} does not exist", arg[iarg + 1]);
+      if (region->openflag)
+        error->all(FLERR, iarg + 1,
+                   "Fix esph/boundary region {} has open faces (region keyword open): its "
+                   "surface does not bound the body cut from it there; use the region without "
+                   "open faces",
+                   arg[iarg + 1]);
       if (region->dynamic_check())
         error->all(FLERR, iarg + 1,
                    "Fix esph/boundary region {} must be static (no move, rotate or variable "
@@ -742,6 +757,31 @@ std::vector<double> FixESPHBoundary::halo_exchange(const std::vector<double> &mi
 }
 
 /* ----------------------------------------------------------------------
+   a contact of region r with point p (its surface point p - del) that is
+   what it claims: finite, of nonzero length, and with its surface point
+   between p's side of the region's shape and the other side (checked at
+   eps on either side); dir = del / |del|, len = |del| (-1 when not finite)
+   LAMMPS's cones with a zero radius end or along y and its unions return
+   contacts that are not
+------------------------------------------------------------------------- */
+
+static bool region_contact(Region *r, const double *p, const Region::Contact &ct, double eps,
+                           double *dir, double &len)
+{
+  len = sqrt(ct.delx * ct.delx + ct.dely * ct.dely + ct.delz * ct.delz);
+  if (!std::isfinite(len)) len = -1.0;
+  if (len <= 0.0) return false;
+  dir[0] = ct.delx / len;
+  dir[1] = ct.dely / len;
+  dir[2] = ct.delz / len;
+  const int side = r->inside(p[0], p[1], p[2]);
+  const double s[3] = {p[0] - ct.delx, p[1] - ct.dely, p[2] - ct.delz};
+  const int toward = r->inside(s[0] + eps * dir[0], s[1] + eps * dir[1], s[2] + eps * dir[2]);
+  const int beyond = r->inside(s[0] - eps * dir[0], s[1] - eps * dir[1], s[2] - eps * dir[2]);
+  return toward == side && beyond != side;
+}
+
+/* ----------------------------------------------------------------------
    keyword region: the normal of a boundary particle whose real particle
    lies in one of the regions (the first that holds it) is the outward
    normal of that region's surface at the surface point nearest to the
@@ -768,7 +808,9 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
     regions.push_back(region);
   }
   double **x = atom->x;
+  const int dim = domain->dimension;
   const double cutoff = REGION_REACH * spacing;
+  const double eps = REGION_CHECK * spacing;
   bigint nset = 0, nfar = 0, nnone = 0, nedge = 0, nkept = 0;
   double maxturn = 0.0;
   const int n = src.size();
@@ -782,51 +824,72 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
       }
     if (!region) continue;
     // at an edge of the region: the generated normal (two faces within reach of the real
-    // particle inside; in 2d only the faces across the plane count, the region's z faces
-    // bound the plane, not the body)
+    // particle inside, not parallel: the two faces of a thin wall are no edge; in 2d only
+    // the faces across the plane count, the region's z faces bound the plane, not the body)
     {
       double p[3] = {xs[0], xs[1], xs[2]};
-      const int nc = region->surface_interior(p, REGION_EDGE_REACH * spacing);
-      int nfaces = 0;
+      const int nc = region->inside(p[0], p[1], p[2])
+          ? region->surface_interior(p, REGION_EDGE_REACH * spacing)
+          : 0;
+      std::vector<std::array<double, 3>> dirs;
+      int nunknown = 0;
       for (int c = 0; c < nc; c++) {
-        const auto &ct = region->contact[c];
-        const double len2 = ct.delx * ct.delx + ct.dely * ct.dely + ct.delz * ct.delz;
-        if (domain->dimension == 3 || ct.delz * ct.delz <= 0.25 * len2) nfaces++;
+        double dir[3], len;
+        const int ok = region_contact(region, p, region->contact[c], eps, dir, len);
+        if (dim == 2 && ok && fabs(dir[2]) > REGION_PLANE_SIN) continue;
+        if (ok)
+          dirs.push_back({dir[0], dir[1], dir[2]});
+        else if (len >= 0.0 && len <= REGION_ON * spacing)
+          nunknown++;    // a face through the particle itself: its direction is unknown
       }
-      if (nfaces >= 2) {
+      bool edge = (nunknown > 0 && dirs.size() + nunknown >= 2);
+      for (size_t a = 0; a < dirs.size() && !edge; a++)
+        for (size_t b = a + 1; b < dirs.size() && !edge; b++)
+          edge = fabs(dirs[a][0] * dirs[b][0] + dirs[a][1] * dirs[b][1] + dirs[a][2] * dirs[b][2]) <
+              REGION_EDGE_COS;
+      if (edge) {
         nkept++;
         continue;
       }
     }
-    // the nearest surface point: from outside the region, or from inside (a boundary
-    // particle of a staircase can lie inside the region it was cut from); a particle on
-    // the surface itself (a lattice face, e.g. of touching blocks) is looked at from a
-    // quarter spacing out along its own normal, where the nearest point is the same
-    int best = -1;
-    double sign = 1.0;
-    for (int attempt = 0; attempt < 2 && best < 0; attempt++) {
+    // the nearest surface point: from outside the region's shape, or from inside (a
+    // boundary particle of a staircase can lie inside the region it was cut from); a
+    // particle on the surface itself (a lattice face, e.g. of touching blocks) is looked at
+    // from a quarter spacing out along its own normal, where the nearest point is the same.
+    // The body's outward normal is the shape's, reversed for a region with side out
+    double nr[3] = {0.0, 0.0, 0.0}, dist = 0.0;
+    bool found = false;
+    for (int attempt = 0; attempt < 2 && !found; attempt++) {
       const double out = attempt ? REGION_NUDGE * spacing : 0.0;
       double p[3];
       for (int d = 0; d < 3; d++) p[d] = bx[3 * k + d] + out * bn[3 * k + d];
-      sign = 1.0;
-      int nc = region->match(p[0], p[1], p[2]) ? 0 : region->surface_exterior(p, cutoff);
-      if (nc == 0) {
-        for (int d = 0; d < 3; d++) p[d] = bx[3 * k + d] + out * bn[3 * k + d];
-        nc = region->surface_interior(p, cutoff);
-        sign = -1.0;
+      const int in = region->inside(p[0], p[1], p[2]);
+      const int nc = in ? region->surface_interior(p, cutoff) : region->surface_exterior(p, cutoff);
+      const double sign = (in ? -1.0 : 1.0) * (region->interior ? 1.0 : -1.0);
+      double best = -1.0;
+      bool onsurf = false;
+      for (int c = 0; c < nc; c++) {
+        double dir[3], len;
+        const bool ok = region_contact(region, p, region->contact[c], eps, dir, len);
+        if (len >= 0.0 && len <= REGION_ON * spacing) onsurf = true;
+        if (!ok || (dim == 2 && fabs(dir[2]) > REGION_PLANE_SIN)) continue;
+        if (best >= 0.0 && len >= best) continue;
+        best = len;
+        for (int d = 0; d < 3; d++) nr[d] = sign * dir[d];
       }
-      for (int c = 0; c < nc; c++)
-        if (best < 0 || region->contact[c].r < region->contact[best].r) best = c;
       // on the surface: the direction is undefined there, look again from outside
-      if (best >= 0 && region->contact[best].r <= REGION_ON * spacing) best = -1;
+      found = !onsurf && best > 0.0;
+      dist = best;
     }
-    if (best < 0) {
+    if (!found) {
       nnone++;
       continue;
     }
-    const auto &ct = region->contact[best];
-    const double len = sqrt(ct.delx * ct.delx + ct.dely * ct.dely + ct.delz * ct.delz);
-    const double nr[3] = {sign * ct.delx / len, sign * ct.dely / len, sign * ct.delz / len};
+    // more than a spacing from the surface: the region is not this body's surface there
+    if (dist > spacing) {
+      nfar++;
+      continue;
+    }
     double *nk = &bn[3 * k];
     const double dot = nk[0] * nr[0] + nk[1] * nr[1] + nk[2] * nr[2];
     const double turn = acos(MAX(-1.0, MIN(1.0, dot)));
@@ -834,7 +897,6 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
     if (strcmp(region->style, "sphere") != 0 && turn > REGION_EDGE * MY_PI / 180.0) nedge++;
     for (int d = 0; d < 3; d++) nk[d] = nr[d];
     nset++;
-    if (ct.r > spacing) nfar++;
   }
   bigint loc[5] = {nset, nfar, nnone, nedge, nkept}, all[5];
   MPI_Allreduce(loc, all, 5, MPI_LMP_BIGINT, MPI_SUM, world);

@@ -443,6 +443,9 @@ CASES = [
      [R("rb", "region rb cylinder x 0 0 0.00025 0 0.0004 units box"),
       K("fix_bnd", " region ra region rb")], "runs"),
     ("fb_region_unknown", [K("fix_bnd", " region nowhere")], "error:region nowhere does not exist"),
+    # a region with open faces has no surface there (LAMMPS still fills its whole shape)
+    ("fb_region_open", [R("rb", "region rb cylinder x 0 0 0.00025 0 0.0004 open 1 units box"),
+                        K("fix_bnd", " region ra region rb")], "error:has open faces"),
     ("fb_region_dynamic", [A("rb", "variable zero equal 0.0"),
                            A("rb", "region mv block 0 0.0004 -0.0002 0.0002 -0.0002 0.0002 "
                                    "move v_zero NULL NULL units box"),

@@ -14,7 +14,10 @@ z (issue 12: a touch test that holds on faces, edges and corners).
 - fit 8 alone (the surface fit of the generated normals) on a cylinder, reported: 1.4e-2;
 - in 2d the region's z faces bound the plane, not the bodies: a disc (a cylinder region
   along z) takes the radial normals, only a block's corners keep their own (before, every
-  boundary particle of a 2d body counted as at an edge and kept its own normal).
+  boundary particle of a 2d body counted as at an edge and kept its own normal), and a z
+  face never gives a normal;
+- a region with side out (a spherical hole) named on its own gives the bore's normals
+  pointing to the hole's centre, out of the body (they pointed into it).
 About 1.5 minutes."""
 import os
 import re
@@ -83,8 +86,8 @@ for R, tend in ((1.0, 10.0), (3.0, 14.0)):
                0.03, "measured 1.4e-2, five times the generated normals': the fit tilts the "
                "normals of the contact line (doc/hard_cases.md 4)")
 
-# --- 2d: a disc R = 1 mm and a block 1 x 1 mm beside it, 0.1 mm, the regions' z faces half
-# a spacing from the plane; the lattice offset (0.3, 0.2)
+# --- 2d: a disc R = 1 mm and a block 1 x 1 mm beside it, 0.1 mm, the regions' z faces near
+# the plane (the disc's 1e-6 m from it, the block's off centre); the lattice offset (0.3, 0.2)
 D2 = """units si
 dimension 2
 atom_style atomic
@@ -93,8 +96,8 @@ boundary f f p
 region box block -3e-3 3e-3 -3e-3 3e-3 -0.5e-4 0.5e-4
 create_box 1 box
 lattice sq 1e-4 origin 0.3 0.2 0
-region d cylinder z 0 0 1e-3 -0.5e-4 0.5e-4 units box
-region b block 1.2e-3 2.2e-3 -0.5e-3 0.5e-3 -0.5e-4 0.5e-4 units box
+region d cylinder z 0 0 1e-3 -1e-6 1e-6 units box
+region b block 1.2e-3 2.2e-3 -0.5e-3 0.5e-3 -0.5e-4 1.5e-4 units box
 create_atoms 1 region d
 create_atoms 1 region b
 group d region d
@@ -126,4 +129,48 @@ c.less("2d disc: normals against the radial direction", err, 1e-12,
        "by up to 30 degrees)")
 c.near("2d: boundary particles that kept their own normals (the block's corners)",
        int(m.group(2)) if m else -1, 4, 0, "one per corner of the block; none on the disc")
+c.less("2d: largest normal component out of the plane", np.abs(bd[:, 7]).max(), 1e-15,
+       "a region's z faces bound the plane, not the body (the nearest z face gave (0, 0, -1) "
+       "where it was closer than the body's own faces)")
+
+# --- a block with a spherical hole, the hole a region with side out named on its own
+# (0.2 mm, lattice offset (0.3, 0.2, 0.1)): the body lies outside the sphere, so its
+# outward normal on the bore points to the sphere's centre (it pointed into the material)
+HOLE = """units si
+atom_style atomic
+atom_modify map array
+boundary f f f
+region box block -2e-3 2e-3 -2e-3 2e-3 -2e-3 2e-3
+create_box 1 box
+lattice sc 2e-4 origin 0.3 0.2 0.1
+region blk block -1.2e-3 1.2e-3 -1.2e-3 1.2e-3 -1.2e-3 1.2e-3 units box
+region hole sphere 0 0 0 0.6e-3 side out units box
+region body intersect 2 blk hole
+create_atoms 1 region body
+pair_style esph/solid 2e-4
+pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
+fix int all esph/integrate
+set group all mass 6.28e-8
+fix bnd all esph/boundary spacing 2e-4 region hole
+neighbor 4e-5 bin
+run 0
+variable bm atom mass==0
+group bnd variable bm
+write_dump bnd custom bndhole.dump id i_esph_body x y z d2_esph_n[1] d2_esph_n[2] d2_esph_n[3] &
+  modify sort id format float %.17g
+"""
+et.run(a, et.write_input(a, "in.hole", HOLE), log="log.hole")
+bh = np.loadtxt(os.path.join(a.workdir, "bndhole.dump"), skiprows=9)
+rh = np.linalg.norm(bh[:, 2:5], axis=1)
+bore = rh < 0.6e-3 + 0.2e-3
+inward = -bh[bore, 2:5] / rh[bore, None]
+err = np.linalg.norm(bh[bore, 5:8] - inward, axis=1).max()
+c.true("hole: boundary particles in the bore", bore.sum() > 20, f"{bore.sum()} found")
+c.less("hole (region with side out): bore normals against the direction to the centre", err,
+       1e-12, "the region's surface normal, reversed for side out: exact")
+outer = ~bore
+c.less("hole: outer faces' normals pointing to the hole's centre", int(
+    (np.einsum("ij,ij->i", bh[outer, 5:8], bh[outer, 2:5]) <= 0.0).sum()), 1,
+       "the outer faces are 2-3 spacings from the sphere: not its surface, they keep their "
+       "generated normals (they took the sphere's, pointing into the body; warned)")
 c.done()
