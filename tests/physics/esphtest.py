@@ -63,6 +63,14 @@ def write_input(args, name, text):
     return path
 
 
+def source_input(args, name):
+    """a copy of the input tests/physics/<name> in the work directory (the logs of its runs
+    go there, not into the source tree); its path"""
+    src = os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
+    with open(src) as f:
+        return write_input(args, name, f.read())
+
+
 def thermo(text):
     """list of runs, each a dict column -> list of floats"""
     runs = []

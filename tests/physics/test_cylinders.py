@@ -28,8 +28,7 @@ import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("lattice cylinders side on")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.lattice_cylinders")
-INP = et.write_input(a, "in.lattice_cylinders", open(SRC).read())
+INP = et.source_input(a, "in.lattice_cylinders")
 REG = "region s1 region s2"
 
 

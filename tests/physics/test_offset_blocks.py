@@ -8,14 +8,12 @@ no momentum across (issue 12: a contact that holds on faces, edges and corners).
   momentum (0.25 at 0.1 mm): a finding, reported and guarded against getting worse;
 - contact/normal cone: the face's normal, 0.033 (0.025 at 0.1 mm).
 About 15 seconds."""
-import os
 
 import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("offset cubes: edges on faces")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.offset_blocks")
-INP = et.write_input(a, "in.offset_blocks", open(SRC).read())
+INP = et.source_input(a, "in.offset_blocks")
 
 # the region surfaces start one spacing (0.2 mm) apart and close at 50 m/s: 4.0 us
 T_MEET = 0.2e-3 / 50.0 * 1e6

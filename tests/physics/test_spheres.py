@@ -12,15 +12,12 @@ frictionless contact: no lateral momentum, no spin, Hertz's contact time.
   R/dx = 15: lateral momentum below 1e-3 of the axial one (issue 12), on 1 and 2 ranks.
 About 3 minutes."""
 import math
-import os
 
 import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("lattice spheres")
-# a copy in the work directory: the logs go there, not into the source tree
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.lattice_spheres")
-INP = et.write_input(a, "in.lattice_spheres", open(SRC).read())
+INP = et.source_input(a, "in.lattice_spheres")
 
 
 def case(name, **var):

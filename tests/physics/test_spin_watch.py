@@ -15,14 +15,12 @@ Checked:
   0.1 %): no warning (no false alarm on a body that keeps its angular momentum);
 - the two-cube warning on 2 ranks as on 1.
 About 15 s."""
-import os
 
 import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("angular momentum of free bodies")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.tumbling_cubes")
-INP = et.write_input(a, "in.tumbling_cubes", open(SRC).read())
+INP = et.source_input(a, "in.tumbling_cubes")
 WARN = "the angular momentum of body"
 
 

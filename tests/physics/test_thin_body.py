@@ -6,7 +6,6 @@ made the stress rate grow without bound (energy x 3, particles at 1400 m/s, befo
 test existed). The correction must fall back to the plain gradient: the energy is kept as
 with gradient plain, no particle outruns the impact, np 2 gives np 1's answer.
 About 10 s."""
-import os
 
 import numpy as np
 
@@ -14,8 +13,7 @@ import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("a body one particle thick")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.thin_plate")
-INP = et.write_input(a, "in.thin_plate", open(SRC).read())
+INP = et.source_input(a, "in.thin_plate")
 
 
 def plate(name, np_=1, **var):

@@ -22,8 +22,7 @@ import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("turn body: normals turned with their body")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.turn_body")
-INP = et.write_input(a, "in.turn_body", open(SRC).read())
+INP = et.source_input(a, "in.turn_body")
 BOX_X = 6.0e-3
 
 

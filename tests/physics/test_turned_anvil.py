@@ -24,8 +24,7 @@ import esphtest as et
 
 a = et.parse_args()
 c = et.Checks("a rigid cube turned by fix move rotate")
-SRC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "in.turned_anvil")
-INP = et.write_input(a, "in.turned_anvil", open(SRC).read())
+INP = et.source_input(a, "in.turned_anvil")
 
 
 def load(name):
