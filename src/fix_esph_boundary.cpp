@@ -782,6 +782,19 @@ static bool region_contact(Region *r, const double *p, const Region::Contact &ct
 }
 
 /* ----------------------------------------------------------------------
+   region_contact() that is not, in 2d, one of the region's z faces (zface:
+   they bound the plane, not the body)
+------------------------------------------------------------------------- */
+
+static bool region_face(Region *r, const double *p, const Region::Contact &ct, double eps, int dim,
+                        double *dir, double &len, bool &zface)
+{
+  const bool ok = region_contact(r, p, ct, eps, dir, len);
+  zface = ok && dim == 2 && fabs(dir[2]) > REGION_PLANE_SIN;
+  return ok && !zface;
+}
+
+/* ----------------------------------------------------------------------
    keyword region: the normal of a boundary particle whose real particle
    lies in one of the regions (the first that holds it) is the outward
    normal of that region's surface at the surface point nearest to the
@@ -813,6 +826,7 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
   const double eps = REGION_CHECK * spacing;
   bigint nset = 0, nfar = 0, nnone = 0, nedge = 0, nkept = 0;
   double maxturn = 0.0;
+  std::vector<std::array<double, 3>> dirs;
   const int n = src.size();
   for (int k = 0; k < n; k++) {
     const double *xs = x[src[k]];
@@ -831,15 +845,14 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
       const int nc = region->inside(p[0], p[1], p[2])
           ? region->surface_interior(p, REGION_EDGE_REACH * spacing)
           : 0;
-      std::vector<std::array<double, 3>> dirs;
+      dirs.clear();
       int nunknown = 0;
       for (int c = 0; c < nc; c++) {
         double dir[3], len;
-        const int ok = region_contact(region, p, region->contact[c], eps, dir, len);
-        if (dim == 2 && ok && fabs(dir[2]) > REGION_PLANE_SIN) continue;
-        if (ok)
+        bool zface;
+        if (region_face(region, p, region->contact[c], eps, dim, dir, len, zface))
           dirs.push_back({dir[0], dir[1], dir[2]});
-        else if (len >= 0.0 && len <= REGION_ON * spacing)
+        else if (!zface && len >= 0.0 && len <= REGION_ON * spacing)
           nunknown++;    // a face through the particle itself: its direction is unknown
       }
       bool edge = (nunknown > 0 && dirs.size() + nunknown >= 2);
@@ -870,10 +883,10 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
       bool onsurf = false;
       for (int c = 0; c < nc; c++) {
         double dir[3], len;
-        const bool ok = region_contact(region, p, region->contact[c], eps, dir, len);
+        bool zface;
+        const bool ok = region_face(region, p, region->contact[c], eps, dim, dir, len, zface);
         if (len >= 0.0 && len <= REGION_ON * spacing) onsurf = true;
-        if (!ok || (dim == 2 && fabs(dir[2]) > REGION_PLANE_SIN)) continue;
-        if (best >= 0.0 && len >= best) continue;
+        if (!ok || (best >= 0.0 && len >= best)) continue;
         best = len;
         for (int d = 0; d < 3; d++) nr[d] = sign * dir[d];
       }
