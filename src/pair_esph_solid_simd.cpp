@@ -16,7 +16,7 @@
 
    A bulk pair is one of two real particles of the same body (of any two
    bodies with contact off), or of a boundary and a real particle of one
-   body (without contact/normal cone): the pairs that most neighbours are
+   body: the pairs that most neighbours are
    and that need none of the contact logic. With simd yes, on a CPU with
    AVX-512, the scalar loop (pair_esph_solid_loop.cpp) takes only the
    other pairs, from the half list split by simd_split(), and this pass
@@ -89,6 +89,7 @@ struct BulkCtx {
   int vswitch, heat;
   int bnd;      // boundary-real pairs of one body here too (not in the scalar loop)
   int solid;    // contact solid: the gap sums of those
+  int cone;     // contact/normal cone: and the cone sums
   double norm;
 };
 
@@ -348,8 +349,8 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
   // the normal and gap sums from i's own body's boundary particles, next in the list
   // (add_normal_sums(), add_gap_sums()): n W, (x_k - x_i).n W, W; W flag, W gap, W gap rate
   if (nbnd > 0) {
-    __m512d sb[8];
-    for (int k = 0; k < 8; k++) sb[k] = zero;
+    __m512d sb[14];
+    for (int k = 0; k < 14; k++) sb[k] = zero;
     const int *blist = jlist + nbulk;
     for (int b = 0; b < nbnd; b += 8) {
       __m512d c0[8], c1[8];
@@ -370,6 +371,15 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
         sb[5] += w * c1[Q_BGFLAG - BLK1];
         sb[6] += w * c1[Q_BGAP - BLK1];
         sb[7] += w * c1[Q_BGAPV - BLK1];
+        if (c.cone) {
+          // add_cone_sums(): W n_k (x) n_k (Voigt)
+          sb[8] += w * n0 * n0;
+          sb[9] += w * n1 * n1;
+          sb[10] += w * n2 * n2;
+          sb[11] += w * n0 * n1;
+          sb[12] += w * n0 * n2;
+          sb[13] += w * n1 * n2;
+        }
       }
     }
     double bs[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -379,6 +389,8 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
       ai[A_GW] += bs[5];
       ai[A_GG] += bs[6];
       ai[A_GV] += bs[7];
+      if (c.cone)
+        for (int k = 0; k < 6; k++) ai[A_NN + k] += _mm512_reduce_add_pd(sb[8 + k]);
     }
   }
 
@@ -528,9 +540,9 @@ void PairESPHSolid::simd_pack()
 void PairESPHSolid::simd_split(int bnd)
 {
   const int sep = bnd && (contact != CONTACT_OFF);
-  // the boundary-real pairs of one body go to the vector pass too, except with the normal
-  // cones (their sums are the scalar loop's)
-  simd_bnd = bnd && (qcol_n < 0);
+  // the boundary-real pairs of one body go to the vector pass too (with the normal cones
+  // their cone sums as well)
+  simd_bnd = bnd;
   const int inum = list->inum;
   // made anew when the lists were built for this computation (neighbor->ago is 0 then, also
   // in a rerun, which sets ncalls back to 0 at each frame), after an init (a run with pre no
@@ -658,6 +670,7 @@ void PairESPHSolid::bulk_pass(LoopOut &out)
   c.heat = heat_flag;
   c.bnd = simd_bnd;
   c.solid = (contact == CONTACT_SOLID);
+  c.cone = c.solid && (qcol_n >= 0);
   c.norm = kernel_norm(kernel, dim, h0);
   const int corr = (correct_flag == CORRECT_RATE);
 
