@@ -127,6 +127,7 @@ void PairESPHSolid::set_defaults()
   gaptol = 0.05;
   onset = 5;
   cone_flag = 0;
+  cone_on = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -443,7 +444,8 @@ void PairESPHSolid::settings(int narg, char **arg)
     ESPHState::ensure_plastic(lmp);
     ESPHState::ensure_visc(lmp);
   }
-  // and the normal cones (carried from one force computation to the next)
+  // and the normal cones (carried from one force computation to the next; made here, before
+  // a read_data that names their sections)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
     error->warning(FLERR,
@@ -679,6 +681,7 @@ void PairESPHSolid::init_style()
   }
   init_turn();
   init_recon();
+  init_cone();
   drop_unused_state();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
   ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
@@ -803,6 +806,39 @@ void PairESPHSolid::init_recon()
 }
 
 /* ----------------------------------------------------------------------
+   the normal cones (contact/normal cone) in use: given, under contact
+   solid, without friction and rigid types (the pair loop has the cones
+   without them), in a scene with boundary particles and more than one
+   body, where a cross-body pair can occur. Decided at each run; elsewhere
+   their state (made by settings()) is kept but not used
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_cone()
+{
+  cone_on = 0;
+  // the pair loop has the cones without friction and rigid types only
+  const int other = (friction > 0.0) || rigid_flag;
+  if (contact == CONTACT_SOLID && cone_flag && other && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid contact/normal cone is not available with {}: the common "
+                   "normal is the mean normal (contact/normal mean); drop contact/normal cone",
+                   friction > 0.0 ? "friction" : "rigid types");
+  if (contact == CONTACT_SOLID && cone_flag && !other) {
+    state->fetch();
+    const double *rmass = state->rmass;
+    const int *body = state->body;
+    int mine[3] = {0, -(1 << 30), -(1 << 30)}, all[3];
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (rmass[i] == 0.0) mine[0] = 1;
+      mine[1] = MAX(mine[1], body[i]);
+      mine[2] = MAX(mine[2], -body[i]);
+    }
+    MPI_Allreduce(mine, all, 3, MPI_INT, MPI_MAX, world);
+    cone_on = all[0] && (all[1] != -all[2]);
+  }
+}
+
+/* ----------------------------------------------------------------------
    the plastic strain (fix ESPH_PLASTIC) is kept while a type has a yield
    stress or a particle has some, the switched viscosity's alpha (fix
    ESPH_VISC) while visc/switch is on or a particle has one; else each is
@@ -915,7 +951,7 @@ void PairESPHSolid::setup()
                "d2_esph_drec_used: these fix IDs are reserved for ESPH's internal fixes (use "
                "another fix ID)",
                ESPHState::FIX_ID_RECON, ESPHState::FIX_ID_RECON_USED);
-  if (cone_flag && contact == CONTACT_SOLID && !state->cone)
+  if (cone_on && !state->cone)
     error->all(FLERR, Error::NOLASTLINE,
                "Pair esph/solid contact/normal cone: the fix {} or {} of the normal cones is "
                "gone (they must not be deleted)",
@@ -939,7 +975,7 @@ void PairESPHSolid::grow_work()
   qcol_b = (correct_flag >= CORRECT_BONETLOK) ? cols0 : -1;
   const int cols1 = cols0 + (qcol_b >= 0 ? 9 : 0);
   qcol_d = recon_flag ? Q_D : -1;
-  qcol_n = (cone_flag && contact == CONTACT_SOLID) ? cols1 : -1;
+  qcol_n = cone_on ? cols1 : -1;
   const int cols = cols1 + (qcol_n >= 0 ? 6 : 0);
   if (cols != hq_cols) {
     memory->destroy(hq);

@@ -64,6 +64,7 @@ class PairESPHSolid : public Pair {
 
  protected:
   void init_recon();
+  void init_cone();
   void drop_unused_state();
   void drop_if_zero(const char *, const char *);
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity
@@ -101,6 +102,9 @@ class PairESPHSolid : public Pair {
   static constexpr int ONSET_WARN = 20;           // a longer ramp is warned (settings())
   static constexpr double MG_SLOPE_WARN = 5.0;    // a steeper Hugoniot is warned (coeff())
   int cone_flag;         // contact/normal: 1 cone (common normal of the cones), 0 mean
+  int cone_on;           // the cones in use (init_cone()): cone under contact solid without
+                         // friction and rigid types, in a scene with boundary particles and
+                         // more than one body
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon

@@ -208,6 +208,8 @@ CASES = [
     ("ps_cnormal_bogus", [K("pair", " contact/normal sharp")], "error:contact/normal must be cone or mean"),
     ("ps_cnormal_mean", [K("pair", " contact/normal mean")], "same"),
     ("ps_cnormal_cone", [K("pair", " contact/normal cone")], "runs"),
+    ("ps_cnormal_cone_friction", [K("pair", " friction 0.2 contact/normal cone")],
+     "warning:contact/normal cone is not available with friction"),
     ("ps_cnormal_cone_np2", [K("pair", " contact/normal cone")], "runs", 2),
     ("ps_cnormal_cone_paper", [K("pair", " contact paper contact/normal cone")],
      "warning:contact/normal cone"),
