@@ -795,6 +795,40 @@ static bool region_face(Region *r, const double *p, const Region::Contact &ct, d
 }
 
 /* ----------------------------------------------------------------------
+   real particle xs at an edge of region r: two or more of its faces within
+   a spacing of it (from inside), not parallel (the two faces of a thin wall are
+   no edge), a face through the particle itself counting as one of unknown
+   direction; in 2d only the faces across the plane count (the region's z
+   faces bound the plane, not the body). dirs: scratch
+------------------------------------------------------------------------- */
+
+static bool region_edge(Region *r, const double *xs, double spacing, int dim,
+                        std::vector<std::array<double, 3>> &dirs)
+{
+  const double eps = REGION_CHECK * spacing;
+  double p[3] = {xs[0], xs[1], xs[2]};
+  const int nc = r->inside(p[0], p[1], p[2]) ? r->surface_interior(p, REGION_EDGE_REACH * spacing)
+                                             : 0;
+  dirs.clear();
+  int nunknown = 0;
+  for (int c = 0; c < nc; c++) {
+    double dir[3], len;
+    bool zface;
+    if (region_face(r, p, r->contact[c], eps, dim, dir, len, zface))
+      dirs.push_back({dir[0], dir[1], dir[2]});
+    else if (!zface && len >= 0.0 && len <= REGION_ON * spacing)
+      nunknown++;    // a face through the particle itself: its direction is unknown
+  }
+  if (nunknown > 0 && dirs.size() + nunknown >= 2) return true;
+  for (size_t a = 0; a < dirs.size(); a++)
+    for (size_t b = a + 1; b < dirs.size(); b++)
+      if (fabs(dirs[a][0] * dirs[b][0] + dirs[a][1] * dirs[b][1] + dirs[a][2] * dirs[b][2]) <
+          REGION_EDGE_COS)
+        return true;
+  return false;
+}
+
+/* ----------------------------------------------------------------------
    keyword region: the normal of a boundary particle whose real particle
    lies in one of the regions (the first that holds it) is the outward
    normal of that region's surface at the surface point nearest to the
@@ -837,33 +871,10 @@ void FixESPHBoundary::region_normals(const std::vector<double> &bx, std::vector<
         break;
       }
     if (!region) continue;
-    // at an edge of the region: the generated normal (two faces within reach of the real
-    // particle inside, not parallel: the two faces of a thin wall are no edge; in 2d only
-    // the faces across the plane count, the region's z faces bound the plane, not the body)
-    {
-      double p[3] = {xs[0], xs[1], xs[2]};
-      const int nc = region->inside(p[0], p[1], p[2])
-          ? region->surface_interior(p, REGION_EDGE_REACH * spacing)
-          : 0;
-      dirs.clear();
-      int nunknown = 0;
-      for (int c = 0; c < nc; c++) {
-        double dir[3], len;
-        bool zface;
-        if (region_face(region, p, region->contact[c], eps, dim, dir, len, zface))
-          dirs.push_back({dir[0], dir[1], dir[2]});
-        else if (!zface && len >= 0.0 && len <= REGION_ON * spacing)
-          nunknown++;    // a face through the particle itself: its direction is unknown
-      }
-      bool edge = (nunknown > 0 && dirs.size() + nunknown >= 2);
-      for (size_t a = 0; a < dirs.size() && !edge; a++)
-        for (size_t b = a + 1; b < dirs.size() && !edge; b++)
-          edge = fabs(dirs[a][0] * dirs[b][0] + dirs[a][1] * dirs[b][1] + dirs[a][2] * dirs[b][2]) <
-              REGION_EDGE_COS;
-      if (edge) {
-        nkept++;
-        continue;
-      }
+    // at an edge of the region: the generated normal
+    if (region_edge(region, xs, spacing, dim, dirs)) {
+      nkept++;
+      continue;
     }
     // the nearest surface point: from outside the region's shape, or from inside (a
     // boundary particle of a staircase can lie inside the region it was cut from); a

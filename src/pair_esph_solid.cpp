@@ -663,16 +663,8 @@ void PairESPHSolid::init_style()
   ESPHCheck::unintegrated(lmp, state, fix_int, rigid);
   if (contact != CONTACT_OFF && !boundary_fix()) {
     // contact needs boundary particles only when there is more than one body
-    int lmin = 1 << 30, lmax = -(1 << 30);
-    state->fetch();
-    const int *body = state->body;
-    for (int i = 0; i < atom->nlocal; i++) {
-      lmin = MIN(lmin, body[i]);
-      lmax = MAX(lmax, body[i]);
-    }
-    int gmin, gmax;
-    MPI_Allreduce(&lmin, &gmin, 1, MPI_INT, MPI_MIN, world);
-    MPI_Allreduce(&lmax, &gmax, 1, MPI_INT, MPI_MAX, world);
+    int gmin, gmax, anybnd;
+    body_range(gmin, gmax, anybnd);
     if (gmin != gmax)
       error->all(FLERR, Error::NOLASTLINE,
                  "Pair esph/solid contact {} between bodies {}..{} requires fix esph/boundary "
@@ -824,18 +816,33 @@ void PairESPHSolid::init_cone()
                    "normal is the mean normal (contact/normal mean); drop contact/normal cone",
                    friction > 0.0 ? "friction" : "rigid types");
   if (contact == CONTACT_SOLID && cone_flag && !other) {
-    state->fetch();
-    const double *rmass = state->rmass;
-    const int *body = state->body;
-    int mine[3] = {0, -(1 << 30), -(1 << 30)}, all[3];
-    for (int i = 0; i < atom->nlocal; i++) {
-      if (rmass[i] == 0.0) mine[0] = 1;
-      mine[1] = MAX(mine[1], body[i]);
-      mine[2] = MAX(mine[2], -body[i]);
-    }
-    MPI_Allreduce(mine, all, 3, MPI_INT, MPI_MAX, world);
-    cone_on = all[0] && (all[1] != -all[2]);
+    int gmin, gmax, anybnd;
+    body_range(gmin, gmax, anybnd);
+    cone_on = anybnd && (gmin != gmax);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the smallest and largest body ID over all ranks' particles, and whether
+   any of them is a boundary particle (zero mass)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::body_range(int &gmin, int &gmax, int &anybnd)
+{
+  state->fetch();
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  // one reduction: the minimum as the maximum of -body
+  int mine[3] = {0, -(1 << 30), -(1 << 30)}, all[3];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (rmass[i] == 0.0) mine[0] = 1;
+    mine[1] = MAX(mine[1], body[i]);
+    mine[2] = MAX(mine[2], -body[i]);
+  }
+  MPI_Allreduce(mine, all, 3, MPI_INT, MPI_MAX, world);
+  anybnd = all[0];
+  gmax = all[1];
+  gmin = -all[2];
 }
 
 /* ----------------------------------------------------------------------

@@ -65,6 +65,7 @@ class PairESPHSolid : public Pair {
  protected:
   void init_recon();
   void init_cone();
+  void body_range(int &, int &, int &);
   void drop_unused_state();
   void drop_if_zero(const char *, const char *);
   // the gradient keyword's kernel-gradient correction: plain, corrected (the velocity

@@ -63,6 +63,14 @@ def write_input(args, name, text):
     return path
 
 
+def boundary_dump(fname):
+    """LAMMPS lines that dump the boundary particles (zero mass) of the current state: id,
+    body, position, normal, sorted by id at full precision (numpy.loadtxt(..., skiprows=9))"""
+    return ("variable bm atom mass==0\ngroup bnd variable bm\n"
+            f"write_dump bnd custom {fname} id i_esph_body x y z d2_esph_n[1] d2_esph_n[2] "
+            "d2_esph_n[3] modify sort id format float %.17g\n")
+
+
 def source_input(args, name):
     """a copy of the input tests/physics/<name> in the work directory (the logs of its runs
     go there, not into the source tree); its path"""

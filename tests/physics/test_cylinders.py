@@ -110,11 +110,7 @@ set group b i_esph_body 2
 fix bnd all esph/boundary spacing 1e-4 region d region b
 neighbor 2e-5 bin
 run 0
-variable bm atom mass==0
-group bnd variable bm
-write_dump bnd custom bnd2d.dump id i_esph_body x y z d2_esph_n[1] d2_esph_n[2] d2_esph_n[3] &
-  modify sort id format float %.17g
-"""
+""" + et.boundary_dump("bnd2d.dump")
 log = et.run(a, et.write_input(a, "in.disc2d", D2), log="log.disc2d")
 m = re.search(r"(\d+) boundary particles took the normals of region\(s\) d b .* (\d+) at the "
               r"regions' edges kept their own", log)
@@ -153,11 +149,7 @@ set group all mass 6.28e-8
 fix bnd all esph/boundary spacing 2e-4 region hole
 neighbor 4e-5 bin
 run 0
-variable bm atom mass==0
-group bnd variable bm
-write_dump bnd custom bndhole.dump id i_esph_body x y z d2_esph_n[1] d2_esph_n[2] d2_esph_n[3] &
-  modify sort id format float %.17g
-"""
+""" + et.boundary_dump("bndhole.dump")
 et.run(a, et.write_input(a, "in.hole", HOLE), log="log.hole")
 bh = np.loadtxt(os.path.join(a.workdir, "bndhole.dump"), skiprows=9)
 rh = np.linalg.norm(bh[:, 2:5], axis=1)
