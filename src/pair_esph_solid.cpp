@@ -65,9 +65,9 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     Pair(lmp), eos(nullptr), shear(nullptr), yield(nullptr), hardening(nullptr), rigid_flag(0),
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
-    acc_cols(A_NN), hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0), recon_keep(0),
-    nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr), state(nullptr),
-    fix_int(nullptr), nthreads(1)
+    cpl(nullptr), acc_cols(A_NN), hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0),
+    recon_keep(0), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr),
+    state(nullptr), fix_int(nullptr), nthreads(1)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -128,6 +128,8 @@ void PairESPHSolid::set_defaults()
   onset = 5;
   cone_flag = 0;
   cone_on = 0;
+  couple_flag = 0;
+  couple_on = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
   astress_eps = 0.0;
@@ -155,6 +157,7 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(bvel);
   memory->destroy(bspin);
   memory->destroy(xsph);
+  memory->destroy(cpl);
   memory->destroy(atom_contact);
   if (allocated) {
     memory->destroy(setflag);
@@ -372,6 +375,11 @@ void PairESPHSolid::settings(int narg, char **arg)
       else
         error->all(FLERR, iarg + 2, "Pair esph/solid contact/normal must be cone or mean, got {}",
                    arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "contact/couple") == 0) {
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid contact/couple", error);
+      couple_flag = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
     } else if (strcmp(arg[iarg], "friction") == 0) {
       if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style esph/solid friction", error);
@@ -674,6 +682,12 @@ void PairESPHSolid::init_style()
   init_turn();
   init_recon();
   init_cone();
+  // contact/couple: only where cross-body pair forces can have a couple (not in 1d)
+  couple_on = couple_flag && (contact != CONTACT_OFF) && (dim > 1);
+  if (couple_flag && !couple_on && comm->me == 0)
+    error->warning(FLERR, "Pair esph/solid contact/couple has no effect {}: drop it",
+                   contact == CONTACT_OFF ? "with contact off (no contact forces)"
+                                          : "in dimension 1 (the pair forces have no couple)");
   drop_unused_state();
   // h against the particle spacing, before the neighbour bins are made for the cutoff
   ESPHCheck::smoothing_length(lmp, h0, hmax, hvar_flag, boundary_spacing());
@@ -991,7 +1005,7 @@ void PairESPHSolid::grow_work()
     if (nmax > 0) memset(hq[0], 0, sizeof(double) * nmax * hq_cols);
   }
   // the cone sums only with the normal cones
-  const int acols = (qcol_n >= 0) ? NACC : A_NN;
+  const int acols = couple_on ? NACC : ((qcol_n >= 0) ? A_CT : A_NN);
   if (acols != acc_cols) {
     memory->destroy(acc);
     acc_cols = acols;
@@ -999,6 +1013,7 @@ void PairESPHSolid::grow_work()
   }
   // set by every force computation before the integrator reads it: no initial values
   if (xsph_flag && !xsph && nmax > 0) memory->create(xsph, nmax, 3, "pair:xsph");
+  if (couple_on && !cpl && nmax > 0) memory->create(cpl, nmax, 10, "pair:cpl");
   if (vswitch_flag && !dalpha && nmax > 0) {
     memory->create(dalpha, nmax, "pair:dalpha");
     for (int i = 0; i < nmax; i++) dalpha[i] = 0.0;
@@ -1008,6 +1023,7 @@ void PairESPHSolid::grow_work()
   nmax = atom->nmax;
   memory->grow(acc, nmax, acc_cols, "pair:acc");
   memory->grow(hq, nmax, hq_cols, "pair:hq");
+  if (cpl) memory->grow(cpl, nmax, 10, "pair:cpl");
   // (rows the vector pass may read in slots this run does not set: finite)
   memset(hq[old], 0, sizeof(double) * (nmax - old) * hq_cols);
   memory->grow(drho, nmax, "pair:drho");
@@ -1127,7 +1143,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
 
   // without boundary particles or gradient correction only G and the heating terms
   // (the cone sums, the last 6 slots, only with contact/normal cone)
-  nreverse = (bnd || correct_flag || xsph_flag) ? (qcol_n >= 0 ? NACC : A_NN) : 11;
+  nreverse = (bnd || correct_flag || xsph_flag) ? acc_cols : 11;
   ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
     for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
   });
@@ -1150,6 +1166,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
       comm->reverse_comm(this, 2);
     }
   }
+  if (couple_on && bnd) contact_couple();
   finalize(eflag);
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -1279,6 +1296,11 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
     }
     return m;
   }
+  if (comm_stage == COMM_COUPLE) {
+    for (int i = 0; i < n; i++)
+      for (int k = couple_k0; k < couple_k1; k++) buf[m++] = cpl[list[i]][k];
+    return m;
+  }
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
     for (int k = Q_V; k < Q_A + 6; k++) buf[m++] = q[k];
@@ -1330,6 +1352,11 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
     }
     return;
   }
+  if (comm_stage == COMM_COUPLE) {
+    for (int i = first; i < last; i++)
+      for (int k = couple_k0; k < couple_k1; k++) cpl[i][k] = buf[m++];
+    return;
+  }
   for (int i = first; i < last; i++) {
     double *q = hq[i];
     for (int k = Q_V; k < Q_A + 6; k++) q[k] = buf[m++];
@@ -1367,6 +1394,11 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     }
     return m;
   }
+  if (comm_stage == COMM_COUPLE) {
+    for (int i = first; i < last; i++)
+      for (int k = couple_k0; k < couple_k1; k++) buf[m++] = cpl[i][k];
+    return m;
+  }
   for (int i = first; i < last; i++) {
     const double *a = acc[i];
     if (comm_stage == COMM_NORMALS) {
@@ -1395,6 +1427,11 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
       atom_contact[list[i]][0] += buf[m++];
       atom_contact[list[i]][1] += buf[m++];
     }
+    return;
+  }
+  if (comm_stage == COMM_COUPLE) {
+    for (int i = 0; i < n; i++)
+      for (int k = couple_k0; k < couple_k1; k++) cpl[list[i]][k] += buf[m++];
     return;
   }
   const double *rmass = state->rmass;
@@ -1427,6 +1464,7 @@ double PairESPHSolid::memory_usage()
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (acc_cols + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
+  if (cpl) bytes += (double) nmax * 10 * sizeof(double);
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   // the vector pass: the scalar loop's split list (the full list is counted by the

@@ -56,7 +56,7 @@ class PairESPHSolid : public Pair {
   bool geometry_used(int, double *) const;
 
   // accumulator slots (real particles | boundary particles), see compute()
-  static constexpr int NACC = 38;
+  static constexpr int NACC = 41;
   // hoisted per-particle quantities (slots Q_* of pair_esph_solid_slots.h)
   static constexpr int NHQ = 32;
   // more hoisted quantities per atom with the artificial stress (R and its flag)
@@ -65,6 +65,7 @@ class PairESPHSolid : public Pair {
  protected:
   void init_recon();
   void init_cone();
+  void contact_couple();
   void body_range(int &, int &, int &);
   void drop_unused_state();
   void drop_if_zero(const char *, const char *);
@@ -102,10 +103,16 @@ class PairESPHSolid : public Pair {
   int onset;        // steps over which a newly touching particle's coupling builds up
   static constexpr int ONSET_WARN = 20;           // a longer ramp is warned (settings())
   static constexpr double MG_SLOPE_WARN = 5.0;    // a steeper Hugoniot is warned (coeff())
-  int cone_flag;         // contact/normal: 1 cone (common normal of the cones), 0 mean
-  int cone_on;           // the cones in use (init_cone()): cone under contact solid without
-                         // friction and rigid types, in a scene with boundary particles and
-                         // more than one body
+  int cone_flag;      // contact/normal: 1 cone (common normal of the cones), 0 mean
+  int cone_on;        // the cones in use (init_cone()): cone under contact solid without
+                      // friction and rigid types, in a scene with boundary particles and
+                      // more than one body
+  int couple_flag;    // contact/couple: the contact force acts at the contact point
+  int couple_on;      // in use (init_style()): given, with contact, in 2d or 3d
+  // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
+  // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
+  double **cpl;
+  int couple_k0, couple_k1;
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
   double astress_eps;    // its strength epsilon

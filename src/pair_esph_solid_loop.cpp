@@ -87,6 +87,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   // bodies (which test it at run time), out of the plain loop
   constexpr int CONE = BND && (EXTRA & (EXTRA_CONE | EXTRA_FRICTION | EXTRA_RIGID));
   const int qcn = CONE ? qcol_n : -1;
+  const int couple = BND && couple_on;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -352,9 +353,22 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           // (a pair with no force at all, e.g. stress-free bodies that touch at the start
           // without artificial viscosity, interacts while it approaches: its strain rate
           // builds the stress that pushes; without it the bodies would pass through)
+          // contact/couple: the pair's couple about the contact point, half to each particle
+          // (add_couple()). With the gradient corrections of B (bonet/lok, torquefree) the
+          // bodies' own forces balance the torque of the full pair force, weighted as in
+          // their M (correction()): the couple is the torque of that force less the torque
+          // of the force applied (none for a pair that does not interact)
+          double tcpl[3] = {0.0, 0.0, 0.0};
+          if (couple && CORR == 2 && phi > 0.0) {
+            const double s = phi * mm;
+            for (int a = 0; a < 3; a++)
+              tcpl[a] = s * (dx[(a + 1) % 3] * Tg[(a + 2) % 3] - dx[(a + 2) % 3] * Tg[(a + 1) % 3]);
+          }
           if (solid ? (phi == 0.0 || fn > 0.0 || (fn == 0.0 && !contact_approach(vn, xn)))
-                    : !touching)
+                    : !touching) {
+            if (couple && CORR == 2) add_couple(acc[i], jown ? acc[j] : nullptr, tcpl);
             continue;
+          }
           // the coupling weight scales force, strain rate and heating alike, so that the
           // work of the force is what the internal energy receives
           fn *= phi;
@@ -376,6 +390,11 @@ void PairESPHSolid::pair_loop(LoopOut &out)
               for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
               avh += 0.5 * ft * vtm / mm;
             }
+          }
+          if (couple) {
+            for (int a = 0; a < 3; a++)
+              tcpl[a] -= dx[(a + 1) % 3] * ff[(a + 2) % 3] - dx[(a + 2) % 3] * ff[(a + 1) % 3];
+            add_couple(acc[i], jown ? acc[j] : nullptr, tcpl);
           }
           // transmitted compressive normal force; with newton off a pair with a ghost
           // partner is seen by two ranks

@@ -50,6 +50,9 @@ static constexpr int GAP_END = 32;
 // 32..37: sum_k W_ik n_k (x) n_k over own boundary particles (Voigt), the cone of the
 // surface (contact normal cone)
 static constexpr int A_NN = 32;
+// 38..40: sum over the real particle's cross-body pairs of the couple of the pair force
+// about the contact point (contact/couple yes, contact_couple())
+static constexpr int A_CT = 38;
 // the check of the boundary normals at a fresh start: a normal is off when its cosine with
 // the direction away from its body's real particles is below NORMAL_CHECK_COS; a warning
 // when more than NORMAL_CHECK_SHARE of them are
@@ -111,7 +114,7 @@ static constexpr int Q_RFLAG = 38;    // 1 if R != 0
 // with the gradient correction bonet/lok: B_i (9, row major) in the last columns, from qcol_b;
 // with contact/normal cone the cone C_i (Voigt, 6) after it, from qcol_n
 
-enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR };
+enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR, COMM_COUPLE };
 
 static constexpr double BIG_DT = 1.0e300;
 
@@ -190,6 +193,18 @@ inline void add_normal_sums(double *ap, double w, double sgn, const double *dx, 
   ap[A_NSUM + 2] += w * nk[2];
   ap[A_DSUM] += w * (sgn * dx[0] * nk[0] + sgn * dx[1] * nk[1] + sgn * dx[2] * nk[2]);
   ap[A_WSUM] += w;
+}
+
+/* ----------------------------------------------------------------------
+   contact/couple: the couple t of a cross-body pair, half to each particle
+   (aj nullptr: j is another rank's)
+------------------------------------------------------------------------- */
+
+inline void add_couple(double *ai, double *aj, const double *t)
+{
+  for (int a = 0; a < 3; a++) ai[A_CT + a] += 0.5 * t[a];
+  if (aj)
+    for (int a = 0; a < 3; a++) aj[A_CT + a] += 0.5 * t[a];
 }
 
 /* ----------------------------------------------------------------------
