@@ -1013,7 +1013,6 @@ void PairESPHSolid::grow_work()
   }
   // set by every force computation before the integrator reads it: no initial values
   if (xsph_flag && !xsph && nmax > 0) memory->create(xsph, nmax, 3, "pair:xsph");
-  if (couple_on && !cpl && nmax > 0) memory->create(cpl, nmax, 10, "pair:cpl");
   if (vswitch_flag && !dalpha && nmax > 0) {
     memory->create(dalpha, nmax, "pair:dalpha");
     for (int i = 0; i < nmax; i++) dalpha[i] = 0.0;
@@ -1395,8 +1394,9 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     return m;
   }
   if (comm_stage == COMM_COUPLE) {
+    // (the rows of atoms without a couple hold nothing)
     for (int i = first; i < last; i++)
-      for (int k = couple_k0; k < couple_k1; k++) buf[m++] = cpl[i][k];
+      for (int k = couple_k0; k < couple_k1; k++) buf[m++] = cflag[i] ? cpl[i][k] : 0.0;
     return m;
   }
   for (int i = first; i < last; i++) {
@@ -1464,7 +1464,7 @@ double PairESPHSolid::memory_usage()
   double bytes = Pair::memory_usage();
   bytes += (double) nmax * (acc_cols + hq_cols + 3 + 6 + 3 + 3) * sizeof(double);
   if (xsph) bytes += (double) nmax * 3 * sizeof(double);
-  if (cpl) bytes += (double) nmax * 10 * sizeof(double);
+  if (cpl) bytes += (double) nmax * 10 * sizeof(double) + (double) cflag.capacity();
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   // the vector pass: the scalar loop's split list (the full list is counted by the

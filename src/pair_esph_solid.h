@@ -66,6 +66,7 @@ class PairESPHSolid : public Pair {
   void init_recon();
   void init_cone();
   void contact_couple();
+  void couple_rate(const double *, const double *, double *) const;
   void body_range(int &, int &, int &);
   void drop_unused_state();
   void drop_if_zero(const char *, const char *);
@@ -112,6 +113,7 @@ class PairESPHSolid : public Pair {
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
   double **cpl;
+  std::vector<char> cflag;    // the atoms with a couple (contact_couple())
   int couple_k0, couple_k1;
   int correct_flag;      // gradient keyword: CORRECT_*
   int astress_flag;      // Monaghan (2000) artificial stress against the tensile instability
