@@ -11,6 +11,8 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   cone     the same with contact/normal cone (the normal cones carried over), and with the
            staggered scheme as well (conestag)
   turnbody the same with fix esph/boundary turn body (the bodies' rigid spins)
+  couple   the same with gradient bonet/lok and contact/couple yes (the contact's couples
+           passed to the neighbours: nothing carried over, all recomputed)
   plastic  the same with hardening plasticity, the artificial stress and XSPH, fixed step
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
@@ -66,6 +68,7 @@ scenes["recon"] = block_scene("cfl 0.3", "visc/recon vanleer") + ({},)
 # the cone rule of the contact normal: cones carried from one computation to the next
 # (fix esph/integrate's per-atom prediction), also through the staggered scheme's rate pass
 scenes["cone"] = block_scene("cfl 0.3", "contact/normal cone") + ({},)
+scenes["couple"] = block_scene("cfl 0.3", "gradient bonet/lok contact/couple yes") + ({},)
 scenes["conestag"] = block_scene("cfl 0.3 scheme staggered", "visc 0 1 0.1 contact/normal cone") + ({},)
 # fix esph/boundary turn body: the bodies' rigid spins, sums over all ranks every step
 scenes["turnbody"] = tuple(t.replace("esph/boundary spacing 1e-4", "esph/boundary spacing 1e-4 turn body")
@@ -219,12 +222,12 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "turnbody", "triclinic",
-              "plastic", "rod", "slabs"):
+for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "couple", "turnbody",
+              "triclinic", "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene in ("bonetlok", "staggered", "recon", "turnbody"):
+        if scene in ("bonetlok", "staggered", "recon", "turnbody", "couple"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene == "triclinic":
             dr = {k: dr[k] for k in ("full", "split2", "balance")}

@@ -60,16 +60,17 @@ for grad in ("bonet/lok", "torquefree"):
 # without the option the contact's couple shows (the contrast: the test can fail)
 c.less("spinning block bonet/lok cone without contact/couple: the couple shows", 1e-3,
        abs(spin["bonetlok_cone_no"][0]), "measured 4.8 % (doc/hard_cases.md)")
-# np 2 against np 1
-log2 = et.run(a, SPIN, {"dx": 0.2, "grad": "bonet/lok", "thermo_every": 20,
-                        "pair_extra": "contact/normal cone contact/couple yes"}, np=2,
-              log="log.spin_np2")
+# np 2 and 4 against np 1
 th1 = spin["bonetlok_cone_yes"][1]
-th2 = et.thermo(log2)[-1]
-dmax = max(np.abs(np.array(th2[k]) - np.array(th1[k])).max() / np.abs(th1[k]).max()
-           for k in ("v_Lz", "c_vA[1]", "c_vB[1]", "c_ke"))
-c.less("spinning block: np 2 against np 1 (L_z, velocities, kinetic energy)", dmax, 1e-10,
-       "the same pairs summed in another order: round-off")
+for np_ in (2, 4):
+    logn = et.run(a, SPIN, {"dx": 0.2, "grad": "bonet/lok", "thermo_every": 20,
+                            "pair_extra": "contact/normal cone contact/couple yes"}, np=np_,
+                  log=f"log.spin_np{np_}")
+    thn = et.thermo(logn)[-1]
+    dmax = max(np.abs(np.array(thn[k]) - np.array(th1[k])).max() / np.abs(th1[k]).max()
+               for k in ("v_Lz", "c_vA[1]", "c_vB[1]", "c_ke"))
+    c.less(f"spinning block: np {np_} against np 1 (L_z, velocities, kinetic energy)", dmax,
+           1e-10, "the same pairs summed in another order: round-off")
 
 # ---------- 2. off-axis rods ----------
 OFF = "offaxis_rods/in.offaxis_rods"

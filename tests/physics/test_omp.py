@@ -118,6 +118,13 @@ tb = dict(rod, bnd_extra="turn body", yoff=0.5)
 tb0 = et.production_thermo(et.run(a, ROD, tb, log="log.tb.t0"))
 compare("off-axis rod, fix esph/boundary turn body: 2 threads vs none", tb0,
         et.production_thermo(et.run(a, ROD, tb, log="log.tb.t2", flags=omp(2))))
+# contact/couple: the couples summed in the threads' rows, passed on after the threaded pass
+# (off-axis: the bodies turn; the default gradient (full list) and bonet/lok (half list))
+for grad in ("corrected", "bonet/lok"):
+    cp = dict(rod, yoff=0.5, pair_extra=f"gradient {grad} contact/couple yes")
+    cp0 = et.production_thermo(et.run(a, ROD, cp, log="log.cpl.t0"))
+    compare(f"off-axis rod, gradient {grad} contact/couple yes: 2 threads vs none", cp0,
+            et.production_thermo(et.run(a, ROD, cp, log="log.cpl.t2", flags=omp(2))))
 cone = {"dx": 0.25, "fit": 16, "smooth": 1.0, "normal": "cone"}
 OBL = "oblique_rod/in.oblique_rod"
 cn0 = et.production_thermo(et.run(a, OBL, cone, log="log.cone.t0"))
