@@ -291,11 +291,16 @@ inline void rotate_by_spin(double *n, const double *spin, double dt)
   for (int d = 0; d < 3; d++) n[d] = n[d] * ct + oxn[d] * s + om[d] * on;
 }
 
-/* paper rule: true when the particles approach along nc. vn = vij.nc, xn = xij.nc */
+/* paper rule: true when the particles approach along nc. vn = vij.nc, xn = xij.nc; tol,
+   the round-off of the product (APPROACH_ROUNDOFF |vij| |xij|), keeps a pair that moves
+   across nc from being decided by the rounding of vn, which depends on the order of sums
+   (the number of ranks) */
 
-inline bool contact_approach(double vn, double xn)
+static constexpr double APPROACH_ROUNDOFF = 1.0e-12;
+
+inline bool contact_approach(double vn, double xn, double tol = 0.0)
 {
-  return vn * xn < 0.0;
+  return vn * xn < -tol;
 }
 
 /* the contact history of one pair of bodies (or of all bodies together), updated once

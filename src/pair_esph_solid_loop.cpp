@@ -261,13 +261,15 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
         }
         double nc[3] = {0.0, 0.0, 0.0};
-        double vn = 0.0, xn = 0.0;
+        double vn = 0.0, xn = 0.0, vxtol = 0.0;
         double vt[3] = {0.0, 0.0, 0.0};
         if (cross) {
           contact_normal(qi + Q_N, qj + Q_N, dx, nc);
           if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
           vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
           xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
+          vxtol =
+              APPROACH_ROUNDOFF * sqrt((vij[0] * vij[0] + vij[1] * vij[1] + vij[2] * vij[2]) * rsq);
           // the slip velocity (of i against j) for friction
           if (FRIC)
             for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
@@ -341,18 +343,12 @@ void PairESPHSolid::pair_loop(LoopOut &out)
             phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
           } else {
             // the paper's rule measures no gap: an interacting pair is a touching one
-            touching = contact_approach(vn, xn);
+            touching = contact_approach(vn, xn, vxtol);
           }
           if (touching && count_pair) {
             ntouch++;
             tally_bodies(tally, bi, body[j])[0] += 1.0;
           }
-          // solid: no tension across contact, a pair that would pull (or not push) does not
-          // interact at all (also not in the strain rate and energy, which would otherwise see
-          // work that no force does); paper: only approaching pairs interact
-          // (a pair with no force at all, e.g. stress-free bodies that touch at the start
-          // without artificial viscosity, interacts while it approaches: its strain rate
-          // builds the stress that pushes; without it the bodies would pass through)
           // contact/couple: the pair's couple about the contact point, half to each particle
           // (add_couple()). With the gradient corrections of B (bonet/lok, torquefree) the
           // bodies' own forces balance the torque of the full pair force, weighted as in
@@ -364,7 +360,20 @@ void PairESPHSolid::pair_loop(LoopOut &out)
             for (int a = 0; a < 3; a++)
               tcpl[a] = s * (dx[(a + 1) % 3] * Tg[(a + 2) % 3] - dx[(a + 2) % 3] * Tg[(a + 1) % 3]);
           }
-          if (solid ? (phi == 0.0 || fn > 0.0 || (fn == 0.0 && !contact_approach(vn, xn)))
+          // solid: no tension across contact, a pair that would pull (or not push) does not
+          // interact at all (also not in the strain rate and energy, which would otherwise see
+          // work that no force does); paper: only approaching pairs interact
+          // (a pair with no force at all, e.g. stress-free bodies that touch at the start
+          // without artificial viscosity, interacts while it approaches: its strain rate
+          // builds the stress that pushes; without it the bodies would pass through).
+          // A normal force of round-off size against the pair's stress scale rho c^2 counts
+          // as none: between stress-free bodies its sign is that of the round-off of sums
+          // whose order depends on the number of ranks, and must not decide
+          const double cbar = 0.5 * (qa[Q_C] + qb[Q_C]);
+          const double fn_eps = FN_ROUNDOFF * mm * (fabs(g[0]) + fabs(g[1]) + fabs(g[2])) * cbar *
+              cbar / (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
+          const int pulls = fn > fn_eps, pushes = fn < -fn_eps;
+          if (solid ? (phi == 0.0 || pulls || (!pushes && !contact_approach(vn, xn, vxtol)))
                     : !touching) {
             if (couple && CORR == 2) add_couple(acc[i], jown ? acc[j] : nullptr, tcpl);
             continue;

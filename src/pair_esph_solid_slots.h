@@ -65,6 +65,9 @@ static constexpr int NBLOCK = 64;
 // length that regularises the alignment score of two boundary particles, and below which
 // an open gap counts as touching (round-off of coinciding faces), in h0
 static constexpr double GAP_EPS = 1.0e-6;
+// a contact pair's normal force below this share of its stress scale (rho c^2 on the pair's
+// kernel gradient) is round-off: it neither pushes nor pulls (pair_loop())
+static constexpr double FN_ROUNDOFF = 1.0e-12;
 
 // optional pair terms, bits of the last template parameter of pair_loop()
 static constexpr int EXTRA_ASTRESS = 1;

@@ -351,6 +351,9 @@ TEST(Contact, NormalGapWeight)
   // paper rule: approaching along nc
   EXPECT_TRUE(contact_approach(+1.0, -1.0));
   EXPECT_FALSE(contact_approach(-1.0, -1.0));
+  // a product of round-off size does not count (the tolerance)
+  EXPECT_FALSE(contact_approach(1.0e-20, -1.0, 1.0e-12));
+  EXPECT_TRUE(contact_approach(1.0e-6, -1.0, 1.0e-12));
   // normals that cancel: fall back on the separation direction
   const double n0[3] = {0, 0, 0};
   contact_normal(n0, n0, xij, nc);
