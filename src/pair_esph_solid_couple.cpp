@@ -65,6 +65,15 @@ static void add_couple_moment(double *jv, double w, const double *r, double rsq)
   jv[5] -= w * r[1] * r[2];
 }
 
+/* the force W u x r on a neighbour at r that carries a share of a couple */
+
+static inline void couple_force(double w, const double *u, const double *r, double *fk)
+{
+  fk[0] = w * (u[1] * r[2] - u[2] * r[1]);
+  fk[1] = w * (u[2] * r[0] - u[0] * r[2]);
+  fk[2] = w * (u[0] * r[1] - u[1] * r[0]);
+}
+
 /* ----------------------------------------------------------------------
    u = J^-1 T: J is positive definite unless the particle's neighbours lie
    on one line. About an axis along which they (nearly) lie they have no
@@ -146,8 +155,8 @@ void PairESPHSolid::contact_couple()
             add_couple_moment(jv, w, r, rsq);
             continue;
           }
-          const double fk[3] = {w * (u[1] * r[2] - u[2] * r[1]), w * (u[2] * r[0] - u[0] * r[2]),
-                                w * (u[0] * r[1] - u[1] * r[0])};
+          double fk[3];
+          couple_force(w, u, r, fk);
           const double *vk = hq[k] + Q_V;
           for (int a = 0; a < 3; a++) {
             f[k][a] += fk[a];
@@ -259,11 +268,10 @@ void PairESPHSolid::contact_couple()
     // from i's couple: f on k, -f on i
     const double *ui = cpl[i];
     const double *uk = cpl[k];
-    const double fk[3] = {w * (ui[1] * r[2] - ui[2] * r[1]), w * (ui[2] * r[0] - ui[0] * r[2]),
-                          w * (ui[0] * r[1] - ui[1] * r[0])};
+    double fk[3], fi[3];
+    couple_force(w, ui, r, fk);
     // from k's couple, r_ki = -r: f on i, -f on k
-    const double fi[3] = {-w * (uk[1] * r[2] - uk[2] * r[1]), -w * (uk[2] * r[0] - uk[0] * r[2]),
-                          -w * (uk[0] * r[1] - uk[1] * r[0])};
+    couple_force(-w, uk, r, fi);
     for (int a = 0; a < 3; a++) f[i][a] += fi[a] - fk[a];
     if (kown)
       for (int a = 0; a < 3; a++) f[k][a] += fk[a] - fi[a];
