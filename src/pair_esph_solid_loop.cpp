@@ -261,15 +261,15 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
         }
         double nc[3] = {0.0, 0.0, 0.0};
-        double vn = 0.0, xn = 0.0, vxtol = 0.0;
+        double vn = 0.0, xn = 0.0, vx2 = 0.0;
         double vt[3] = {0.0, 0.0, 0.0};
         if (cross) {
           contact_normal(qi + Q_N, qj + Q_N, dx, nc);
           if (qcn >= 0) contact_normal_cone(qi + qcn, qj + qcn, nc);
           vn = vij[0] * nc[0] + vij[1] * nc[1] + vij[2] * nc[2];
           xn = dx[0] * nc[0] + dx[1] * nc[1] + dx[2] * nc[2];
-          vxtol =
-              APPROACH_ROUNDOFF * sqrt((vij[0] * vij[0] + vij[1] * vij[1] + vij[2] * vij[2]) * rsq);
+          // |v_ij|^2 r^2, for the round-off tolerance of the approach test (vxtol())
+          vx2 = (vij[0] * vij[0] + vij[1] * vij[1] + vij[2] * vij[2]) * rsq;
           // the slip velocity (of i against j) for friction
           if (FRIC)
             for (int a = 0; a < 3; a++) vt[a] = vij[a] - vn * nc[a];
@@ -343,7 +343,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
             phi = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
           } else {
             // the paper's rule measures no gap: an interacting pair is a touching one
-            touching = contact_approach(vn, xn, vxtol);
+            touching = contact_approach(vn, xn, APPROACH_ROUNDOFF * sqrt(vx2));
           }
           if (touching && count_pair) {
             ntouch++;
@@ -369,11 +369,15 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           // A normal force of round-off size against the pair's stress scale rho c^2 counts
           // as none: between stress-free bodies its sign is that of the round-off of sums
           // whose order depends on the number of ranks, and must not decide
+          // (fn rho compared with the tolerance times rho: no division; the approach's
+          // tolerance, a square root, only where the force does not decide)
           const double cbar = 0.5 * (qa[Q_C] + qb[Q_C]);
-          const double fn_eps = FN_ROUNDOFF * mm * (fabs(g[0]) + fabs(g[1]) + fabs(g[2])) * cbar *
-              cbar / (0.5 * (qa[Q_RHO] + qb[Q_RHO]));
-          const int pulls = fn > fn_eps, pushes = fn < -fn_eps;
-          if (solid ? (phi == 0.0 || pulls || (!pushes && !contact_approach(vn, xn, vxtol)))
+          const double fn_rho = fn * 0.5 * (qa[Q_RHO] + qb[Q_RHO]);
+          const double fn_tol =
+              FN_ROUNDOFF * mm * (fabs(g[0]) + fabs(g[1]) + fabs(g[2])) * cbar * cbar;
+          const int pulls = fn_rho > fn_tol, pushes = fn_rho < -fn_tol;
+          if (solid ? (phi == 0.0 || pulls ||
+                       (!pushes && !contact_approach(vn, xn, APPROACH_ROUNDOFF * sqrt(vx2))))
                     : !touching) {
             if (couple && CORR == 2) add_couple(acc[i], jown ? acc[j] : nullptr, tcpl);
             continue;
