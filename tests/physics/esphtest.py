@@ -71,6 +71,38 @@ def boundary_dump(fname):
             "d2_esph_n[3] modify sort id format float %.17g\n")
 
 
+def small_blocks(r0, pair_extra=""):
+    """LAMMPS lines of two small iron bodies on a 0.1 mm lattice touching at x = 0: body 1 in
+    the block r0 ("xlo xhi ylo yhi zlo zhi", metres), body 2 in 0..0.4 x 0..0.6 x -0.2..0.2 mm;
+    pair_style esph/solid (h 0.13 mm, pair_extra appended), fix esph/integrate, a 5 ns step,
+    generated boundary particles; groups b0, b1, real and rb0 (body 1's real particles)"""
+    return f"""units si
+atom_style atomic
+atom_modify map array
+boundary f f f
+region box block -0.001 0.001 -0.001 0.001 -0.001 0.001
+create_box 2 box
+lattice sc 0.0001 origin 0.5 0.5 0.5
+region r0 block {r0} units box
+create_atoms 1 region r0
+region r1 block 0 0.0004 0 0.0006 -0.0002 0.0002 units box
+create_atoms 2 region r1
+group b0 region r0
+group b1 region r1
+pair_style esph/solid 0.00013 {pair_extra}
+pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
+fix int all esph/integrate
+timestep 5e-09
+set group all mass 7.85e-09
+set group b0 i_esph_body 1
+set group b1 i_esph_body 2
+fix bnd all esph/boundary spacing 0.0001
+variable massive atom mass>0.0
+group real variable massive
+group rb0 intersect b0 real
+"""
+
+
 def source_input(args, name):
     """a copy of the input tests/physics/<name> in the work directory (the logs of its runs
     go there, not into the source tree); its path"""

@@ -132,31 +132,7 @@ for simd in ("yes", "no"):
 # about the row's axis its particles have no lever: that part of a couple is left out (the
 # pseudo-inverse with COUPLE_LEVER); before, the forces that carried it grew without bound
 # (a hostile round: the energy x1000 in 10 steps, lost atoms at step 120)
-ROW = """
-units si
-atom_style atomic
-atom_modify map array
-boundary f f f
-region box block -0.001 0.001 -0.001 0.001 -0.001 0.001
-create_box 2 box
-lattice sc 0.0001 origin 0.5 0.5 0.5
-region r0 block -0.0003 0 0 0.0001 0 0.0001 units box
-create_atoms 1 region r0
-region r1 block 0 0.0004 0 0.0006 -0.0002 0.0002 units box
-create_atoms 2 region r1
-group b0 region r0
-group b1 region r1
-pair_style esph/solid 0.00013 gradient bonet/lok contact/couple yes
-pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
-fix int all esph/integrate
-timestep 5e-09
-set group all mass 7.85e-09
-set group b0 i_esph_body 1
-set group b1 i_esph_body 2
-fix bnd all esph/boundary spacing 0.0001
-variable massive atom mass>0.0
-group real variable massive
-group rb0 intersect b0 real
+ROW = et.small_blocks("-0.0003 0 0 0.0001 0 0.0001", "gradient bonet/lok contact/couple yes") + """
 velocity rb0 set 50 10 5 units box
 neighbor 2e-05 bin
 compute ke real ke

@@ -49,31 +49,7 @@ for name, var in cases.items():
 # the order of sums): 4 ranks differed from 1 by 7e-7 in the kinetic energy after one step
 # and 1e-5 after 12 (found by a hostile round, 2026-12-05); now round-off, the decisions
 # taken with a tolerance of 1e-12 of the pair's scale
-SPIN2 = """
-units si
-atom_style atomic
-atom_modify map array
-boundary f f f
-region box block -0.001 0.001 -0.001 0.001 -0.001 0.001
-create_box 2 box
-lattice sc 0.0001 origin 0.5 0.5 0.5
-region r0 block -0.0004 0 -0.0002 0.0002 -0.0002 0.0002 units box
-create_atoms 1 region r0
-group b0 region r0
-region r1 block 0 0.0004 0 0.0006 -0.0002 0.0002 units box
-create_atoms 2 region r1
-group b1 region r1
-pair_style esph/solid 0.00013
-pair_coeff * * rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
-fix int all esph/integrate
-timestep 5e-09
-set group all mass 7.85e-09
-set group b0 i_esph_body 1
-set group b1 i_esph_body 2
-fix bnd all esph/boundary spacing 0.0001
-variable massive atom mass>0.0
-group real variable massive
-group rb0 intersect b0 real
+SPIN2 = et.small_blocks("-0.0004 0 -0.0002 0.0002 -0.0002 0.0002") + """
 variable xc0 equal xcm(rb0,x)
 variable yc0 equal xcm(rb0,y)
 variable vx0 atom 50-20000.0*(y-v_yc0)
