@@ -23,6 +23,7 @@
 #include "comm.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
+#include "esph_strength.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -93,10 +94,8 @@ void PairESPHSolid::couple_rate(const double *jv, const double *t, double *u) co
     if (jv[2] > 0.0) u[2] = t[2] / jv[2];
     return;
   }
-  Eigen::Matrix3d J;
-  J << jv[0], jv[3], jv[4], jv[3], jv[1], jv[5], jv[4], jv[5], jv[2];
   const Eigen::Vector3d T(t[0], t[1], t[2]);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(J);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(voigt_to_matrix(jv));
   const Eigen::Vector3d lam = es.eigenvalues();
   const Eigen::Matrix3d &V = es.eigenvectors();
   for (int a = 0; a < 3; a++)
