@@ -152,24 +152,35 @@ inline void contact_normal_cone(const double *ci, const double *cj, double *nc)
 static constexpr double GAP_NONE = 1.0e30;
 
 /* candidate gap between boundary particles a and b of different bodies: xab = x_b - x_a,
-   vab = v_b - v_a. Returns false when they do not face each other; else the gap g, its
-   rate gdot and the alignment score c = 1 + (|g| + eps) / (r + eps), larger is better:
-   2 for partners straight across, and for coincident ones. The length eps (a millionth
-   of the smoothing length) makes the score continuous at r = 0: two boundary particles
-   that coincide in exact arithmetic (touching faces) are a round-off distance apart in a
-   rotated scene, where |g| / r alone would be 0 / 0 */
+   vab = v_b - v_a. Returns false when they do not face each other, or when b lies beyond
+   the reach (reach2 = reach^2; 0: no limit); else the gap g, its rate gdot and the
+   alignment score c = 1 + (|g| + eps) / (r + eps), larger is better: 2 for partners
+   straight across, and for coincident ones. The length eps (a millionth of the smoothing
+   length) makes the score continuous at r = 0: two boundary particles that coincide in
+   exact arithmetic (touching faces) are a round-off distance apart in a rotated scene,
+   where |g| / r alone would be 0 / 0.
+   The reach is GAP_REACH boundary spacings, the kernel support at h = spacing: the gap is
+   a property of the boundary particles, not of the smoothing length. Beyond it, with a
+   larger h or hvar, an edge whose other body ends a spacing or more away sideways took
+   the "gap" of oblique partners there (their sideways offset projected on the tilted
+   difference of the normals: negative), and two blocks 0.32 spacings apart pushed each
+   other from the first step. */
+
+static constexpr double GAP_REACH = 2.0;
 
 inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,
-                            const double *vab, double eps, double &c, double &g, double &gdot)
+                            const double *vab, double eps, double reach2, double &c, double &g,
+                            double &gdot)
 {
   const double m[3] = {na[0] - nb[0], na[1] - nb[1], na[2] - nb[2]};
   const double m2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
   if (m2 <= 1.0) return false;
+  const double r2 = xab[0] * xab[0] + xab[1] * xab[1] + xab[2] * xab[2];
+  if (reach2 > 0.0 && r2 > reach2) return false;
   const double inv = 1.0 / sqrt(m2);
   g = (xab[0] * m[0] + xab[1] * m[1] + xab[2] * m[2]) * inv;
   gdot = (vab[0] * m[0] + vab[1] * m[1] + vab[2] * m[2]) * inv;
-  const double r = sqrt(xab[0] * xab[0] + xab[1] * xab[1] + xab[2] * xab[2]);
-  c = 1.0 + (fabs(g) + eps) / (r + eps);
+  c = 1.0 + (fabs(g) + eps) / (sqrt(r2) + eps);
   return true;
 }
 

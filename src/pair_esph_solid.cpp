@@ -78,6 +78,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   normals_valid = 0;
   turn_body = 0;
   dt_cfl = 0.0;
+  gap_reach2 = 0.0;
   dt_step = 0.0;
   dt_keep = 0;
   ncontact_pairs = ntouch_pairs = 0;
@@ -167,6 +168,11 @@ void PairESPHSolid::init_style()
   init_turn();
   init_recon();
   init_cone();
+  // the reach of a surface-gap partner, in the boundary particles' spacing (the smoothing
+  // length where no fix esph/boundary gives it)
+  const double sb = boundary_spacing();
+  const double reach = GAP_REACH * ((sb > 0.0) ? sb : h0);
+  gap_reach2 = reach * reach;
   // contact/couple: only where cross-body pair forces can have a couple (not in 1d)
   couple_on = couple_flag && (contact != CONTACT_OFF) && (dim > 1);
   if (couple_flag && !couple_on && comm->me == 0)

@@ -97,11 +97,12 @@ class PairESPHSolid : public Pair {
   int recon_warned;      // the warning that visc/recon has no effect was given
   int heat_flag;         // artificial heat transfer (eqs. 8-10)
   double g1, g2;
-  int hvar_flag;    // variable smoothing length (eq. 24)
-  double hmax;      // allowed growth of h (cutoff factor)
-  int contact;      // ESPH::ContactRule
-  double gaptol;    // largest open gap a releasing contact pair may push across (of h0)
-  int onset;        // steps over which a newly touching particle's coupling builds up
+  int hvar_flag;        // variable smoothing length (eq. 24)
+  double hmax;          // allowed growth of h (cutoff factor)
+  int contact;          // ESPH::ContactRule
+  double gaptol;        // largest open gap a releasing contact pair may push across (of h0)
+  double gap_reach2;    // squared reach of a surface-gap partner (GAP_REACH spacings)
+  int onset;            // steps over which a newly touching particle's coupling builds up
   static constexpr int ONSET_WARN = 20;           // a longer ramp is warned (settings())
   static constexpr double MG_SLOPE_WARN = 5.0;    // a steeper Hugoniot is warned (coeff())
   int cone_flag;      // contact/normal: 1 cone (common normal of the cones), 0 mean

@@ -258,37 +258,54 @@ TEST(Contact, NormalGapWeight)
   const double vab[3] = {-3.0, 1.0, 0.0};    // b approaches at 3, slides at 1
   double c, g, gd;
   const double xab[3] = {0.2, 0.7, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 0.0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, 0.2);
   EXPECT_DOUBLE_EQ(gd, -3.0);
   EXPECT_NEAR(c, 1.0 + 0.2 / sqrt(0.53), 1e-15);
   // seen from b: the same gap and rate
   const double xba[3] = {-0.2, -0.7, 0.0}, vba[3] = {3.0, -1.0, 0.0};
   double c2, g2, gd2;
-  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, 0.0, c2, g2, gd2));
+  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, 0.0, 0.0, c2, g2, gd2));
   EXPECT_DOUBLE_EQ(g2, g);
   EXPECT_DOUBLE_EQ(gd2, gd);
   EXPECT_DOUBLE_EQ(c2, c);
   // a face rotated by 30 degrees: still the face distance
   const double t = M_PI / 6, ra[3] = {cos(t), sin(t), 0}, rb[3] = {-cos(t), -sin(t), 0};
   const double xr[3] = {0.2 * cos(t) - 0.7 * sin(t), 0.2 * sin(t) + 0.7 * cos(t), 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, 0.0, 0.0, c, g, gd));
   EXPECT_NEAR(g, 0.2, 1e-15);
   // overlap: negative gap
   const double xo[3] = {-0.1, 0.0, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, 0.0, 0.0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, -0.1);
   EXPECT_DOUBLE_EQ(c, 2.0);
   // coincident partners score 2 and so do partners a round-off distance apart (a rotated
   // scene): the score is continuous at r = 0
   const double x0[3] = {0.0, 0.0, 0.0}, xeps[3] = {1e-19, -2e-19, 3e-20};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, x0, vab, 1e-6, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, x0, vab, 1e-6, 0.0, c, g, gd));
   EXPECT_DOUBLE_EQ(c, 2.0);
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xeps, vab, 1e-6, c2, g2, gd2));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xeps, vab, 1e-6, 0.0, c2, g2, gd2));
   EXPECT_NEAR(c2, 2.0, 1e-12);
   // side by side surfaces (normals within 60 degrees) do not face each other
   const double ns[3] = {cos(0.9), sin(0.9), 0.0};
-  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, 0.0, c, g, gd));
+  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, 0.0, 0.0, c, g, gd));
+  // the reach (here 2, reach2 = 4): a partner within it counts as without a limit, one
+  // beyond it not at all; 0: no limit
+  double c3, g3, gd3;
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 4.0, c3, g3, gd3));
+  EXPECT_NEAR(c3, 1.0 + 0.2 / sqrt(0.53), 1e-15);
+  EXPECT_DOUBLE_EQ(g3, 0.2);
+  const double x21[3] = {0.2, 2.1, 0.0};
+  EXPECT_FALSE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 4.0, c3, g3, gd3));
+  EXPECT_TRUE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 0.0, c3, g3, gd3));
+  // why: an edge (normal at 45 degrees) whose partner on a face lies 0.32 below and 2.5
+  // sideways (the face ends before it) has a negative "gap" along the tilted normal
+  // difference, closed across an open gap
+  const double ne[3] = {0.0, M_SQRT1_2, M_SQRT1_2}, nf[3] = {0.0, -1.0, 0.0};
+  const double xef[3] = {0.0, 0.32, -2.5};
+  ASSERT_TRUE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 0.0, c3, g3, gd3));
+  EXPECT_LT(g3, 0.0);
+  EXPECT_FALSE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 4.0, c3, g3, gd3));
 
   // the candidates' mean weighted by exp(KAPPA (c - c_max)): a tie shares, a clearly worse
   // candidate (0.4 below) does not count; any order, and split into partial states merged
