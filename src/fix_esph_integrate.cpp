@@ -75,6 +75,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   time_file = 0.0;
   step_file = -1;
   dt_used = 0.0;
+  time_run_end = -1.0;
   dt_prev = 0.0;
   dt_warned = 0.0;
   dtmin_warned = 0.0;
@@ -237,19 +238,31 @@ void FixESPHIntegrate::init()
     update->atimestep = update->ntimestep;
   }
   time_pending = 0;
-  // reset_timestep to an earlier step sets the time to 0: the contact history keeps the
-  // times of the old origin
+  // reset_timestep moves the time without steps: to 0 for an earlier step, forward by the
+  // steps skipped for a later one, to T with its time keyword. The contact history keeps
+  // the times of the old origin
   const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
   double latest = std::max(contact_all.tfirst, contact_all.tlatest);
   for (const auto &r : body_records) latest = std::max(latest, std::max(r.tfirst, r.tlatest));
   const bool rerun = input->command && strcmp(input->command, "rerun") == 0;
-  if (latest > now * (1.0 + 1.0e-12) + 1.0e-300 && !rerun && comm->me == 0)
-    error->warning(FLERR,
-                   "Fix esph/integrate: the time ({}) is before the contact history's last "
-                   "time ({}), reset by reset_timestep: the first-touch and end times keep the "
-                   "old origin, so contact durations across the reset are wrong: use "
-                   "reset_timestep before the bodies touch",
-                   now, latest);
+  const double tol = 1.0e-12 * std::max(fabs(now), fabs(time_run_end)) + 1.0e-300;
+  if (!rerun && latest >= 0.0 && comm->me == 0) {
+    if (time_run_end >= 0.0 && fabs(now - time_run_end) > tol)
+      error->warning(FLERR,
+                     "Fix esph/integrate: the time went from {} at the end of the last run to "
+                     "{} without a step (reset_timestep) while there is a contact history: its "
+                     "first-touch and end times keep the old origin, so contact durations "
+                     "across the reset are wrong: use reset_timestep before the bodies touch, "
+                     "or keep the time with reset_timestep N time {}",
+                     time_run_end, now, time_run_end);
+    else if (latest > now * (1.0 + 1.0e-12) + 1.0e-300)
+      error->warning(FLERR,
+                     "Fix esph/integrate: the time ({}) is before the contact history's last "
+                     "time ({}), reset by reset_timestep: the first-touch and end times keep "
+                     "the old origin, so contact durations across the reset are wrong: use "
+                     "reset_timestep before the bodies touch",
+                     now, latest);
+  }
   state->fetch();
   for (int t = 1; t <= atom->ntypes; t++)
     if (pair->yield[t] > 0.0 && !state->epsp)
@@ -283,6 +296,15 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   double **v = atom->v;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  // a continued run: the boundary particles another fix moves had turned at the end of the
+  // last step, after its force computation; the setup's re-evaluation of it saw them as
+  // it did (resume_check()), the next step sees them turned
+  if (!turned_n.empty()) {
+    for (int i = 0; i < nlocal; i++)
+      if (turns_at_end(i))
+        for (int d = 0; d < 3; d++) state->n[i][d] = turned_n[3 * i + d];
+    turned_n.clear();
+  }
   for (int i = 0; i < nlocal; i++)
     if (move && (mask[i] & groupbit) && state->rmass[i] == 0.0) {
       v[i][0] = pair->bvel[i][0];
@@ -633,6 +655,20 @@ void FixESPHIntegrate::set_pred_from_state(int i)
 }
 
 /* ----------------------------------------------------------------------
+   true for a boundary particle that turns with its body's spin at the end
+   of the step (final_integrate()): one that another fix moves, or that
+   stays at rest
+------------------------------------------------------------------------- */
+
+bool FixESPHIntegrate::turns_at_end(int i) const
+{
+  // (a boundary particle the integrator does not move; in_group as final_integrate())
+  if (state->rmass[i] != 0.0) return false;
+  const int nint = (igroup == atom->firstgroup) ? atom->nfirst : atom->nlocal;
+  return !(move && i < nint && (atom->mask[i] & groupbit));
+}
+
+/* ----------------------------------------------------------------------
    a boundary particle's normal rotated over one step by its spin tensor W
    (eq. 17): dn/dt = W n = omega x n
 ------------------------------------------------------------------------- */
@@ -703,7 +739,7 @@ void FixESPHIntegrate::final_integrate()
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     for (int i = from; i < to; i++) {
       const bool in_group = i < nint && (mask[i] & groupbit);
-      if (rmass[i] == 0.0 && !(in_group && move)) {
+      if (turns_at_end(i)) {
         // a boundary particle that another fix moves (fix move on a rigid body, or move no)
         // or that stays at rest turns with its body's spin at the end of the step, from
         // the velocities that fix has set: exact for a rigid rotation, nothing at rest or

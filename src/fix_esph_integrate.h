@@ -108,7 +108,12 @@ class FixESPHIntegrate : public Fix {
   int time_pending;    // read_restart: restore the elapsed time at the next init
   double time_file;    // elapsed time and step when the restart file was written
   bigint step_file;
-  double dt_used;    // time step of the last force computation, saved at post_run
+  double dt_used;         // time step of the last force computation, saved at post_run
+  double time_run_end;    // the time at the end of the last run (-1: none in this process)
+  // a continued run: the normals, after the end-of-step turn, of the boundary particles
+  // another fix moves (the setup's re-evaluation sees them as the last computation did)
+  std::vector<double> turned_n;
+  bool turns_at_end(int i) const;
   double dt_prev;    // time step between the rates stored in P_PREV and the last ones
   int nthreads;      // threads of the per-atom passes (1; esph/integrate/omp: package omp)
   class PairESPHSolid *pair;

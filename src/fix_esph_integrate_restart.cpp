@@ -54,6 +54,7 @@ static constexpr double RESTART_LAYOUT = 2026120501.0;
 
 void FixESPHIntegrate::post_run()
 {
+  time_run_end = update->atime + (update->ntimestep - update->atimestep) * update->dt;
   state->fetch();
   for (int i = 0; i < atom->nlocal; i++) {
     save_normal_used(i, pred[i] + P_USED);
@@ -109,9 +110,17 @@ int FixESPHIntegrate::resume_check()
   // the re-evaluation uses the normals the last computation used; it stores the ones it
   // finds, as that computation did
   // (boundary particles carry their own normals; their gaps are found by each computation)
+  // The boundary particles another fix moves turned at the end of the last step, after its
+  // force computation: the re-evaluation sees them as it did, setup() turns them again
+  turned_n.assign(3 * (size_t) atom->nlocal, 0.0);
   for (int i = 0; i < atom->nlocal; i++) {
     if (state->rmass[i] > 0.0)
       for (int d = 0; d < 3; d++) state->n[i][d] = pred[i][P_USED + d];
+    else if (turns_at_end(i))
+      for (int d = 0; d < 3; d++) {
+        turned_n[3 * i + d] = state->n[i][d];
+        state->n[i][d] = pred[i][P_USED + d];
+      }
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
     state->eng[i] = pred[i][P_USED + 5];

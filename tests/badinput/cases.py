@@ -653,6 +653,14 @@ CASES = [
     ("rs_reset_timestep_in_contact",
      [B("run", "run 10"), B("run", "reset_timestep 0")],
      "warning:contact durations across the reset are wrong"),
+    # forward: LAMMPS moves the time on by the steps skipped (found by a hostile round,
+    # 2026-12-06: the contact durations took the jump without a word)
+    ("rs_reset_timestep_forward_in_contact",
+     [B("run", "run 10"), B("run", "reset_timestep 1000")],
+     "warning:contact durations across the reset are wrong"),
+    # with its time keyword at the time the run ended: nothing moves, nothing to say
+    ("rs_reset_timestep_time_kept",
+     [B("run", "run 10"), B("run", "reset_timestep 1000 time $(time)")], "runs"),
     # write_data and read_data: the per-type masses ESPH never set are written as 1.0
     # (read_data rejects 0), the user's are kept
     ("rs_write_read_data",
