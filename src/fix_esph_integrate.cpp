@@ -241,7 +241,7 @@ void FixESPHIntegrate::init()
   // reset_timestep moves the time without steps: to 0 for an earlier step, forward by the
   // steps skipped for a later one, to T with its time keyword. The contact history keeps
   // the times of the old origin
-  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  const double now = elapsed();
   double latest = std::max(contact_all.tfirst, contact_all.tlatest);
   for (const auto &r : body_records) latest = std::max(latest, std::max(r.tfirst, r.tlatest));
   const bool rerun = input->command && strcmp(input->command, "rerun") == 0;
@@ -654,6 +654,13 @@ void FixESPHIntegrate::set_pred_from_state(int i)
   p[P_ALPHA] = (pair->vswitch_flag && state->alpha) ? state->alpha[i] : 0.0;
 }
 
+/* ---------------------------------------------------------------------- */
+
+double FixESPHIntegrate::elapsed() const
+{
+  return update->atime + (update->ntimestep - update->atimestep) * update->dt;
+}
+
 /* ----------------------------------------------------------------------
    true for a boundary particle that turns with its body's spin at the end
    of the step (final_integrate()): one that another fix moves, or that
@@ -798,7 +805,7 @@ void FixESPHIntegrate::final_integrate()
   if (pair->nboundary > 0) {
     double total[3];
     contact_tallies(total);
-    const double t = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+    const double t = elapsed();
     // (no net force for all bodies together: it is per pair of bodies)
     const double sums[ESPH::ContactRecord::NTALLY] = {total[0], total[1], total[2], 0.0, 0.0, 0.0};
     contact_all.update(t, update->dt, sums);

@@ -110,6 +110,8 @@ class FixESPHIntegrate : public Fix {
   bigint step_file;
   double dt_used;         // time step of the last force computation, saved at post_run
   double time_run_end;    // the time at the end of the last run (-1: none in this process)
+  // the simulation time now (as thermo's time keyword counts it)
+  double elapsed() const;
   // a continued run: the normals, after the end-of-step turn, of the boundary particles
   // another fix moves (the setup's re-evaluation sees them as the last computation did)
   std::vector<double> turned_n;

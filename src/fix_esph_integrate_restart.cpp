@@ -54,7 +54,7 @@ static constexpr double RESTART_LAYOUT = 2026120501.0;
 
 void FixESPHIntegrate::post_run()
 {
-  time_run_end = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  time_run_end = elapsed();
   state->fetch();
   for (int i = 0; i < atom->nlocal; i++) {
     save_normal_used(i, pred[i] + P_USED);
@@ -184,13 +184,10 @@ void FixESPHIntegrate::write_restart(FILE *fp)
   // written inside a run after a step: the fingerprints of now (pack_restart);
   // between runs: those stored at the end of the last run
   const int now = (update->whichflag == 1 && update->ntimestep != fp_step);
-  double list[NRESTART] = {RESTART_LAYOUT,
-                           (double) havepred,
-                           (double) (now ? atom->natoms : fp_natoms),
-                           update->atime + (update->ntimestep - update->atimestep) * update->dt,
-                           (double) update->ntimestep,
-                           now ? pair->dt_step : dt_used,
-                           dt_prev};
+  double list[NRESTART] = {
+      RESTART_LAYOUT, (double) havepred,          (double) (now ? atom->natoms : fp_natoms),
+      elapsed(),      (double) update->ntimestep, now ? pair->dt_step : dt_used,
+      dt_prev};
   // then the contact history of all bodies and per pair of bodies
   std::vector<double> bp(ESPH::ContactRecord::NVALUES);
   contact_all.pack(bp.data());
