@@ -21,8 +21,9 @@
 // is g_ab = (x_b - x_a).nbar, the same seen from a and from b. Each boundary particle
 // keeps the gap to the partner that lies most nearly on that line, max |g_ab| / r_ab
 // (ties: the smaller gap), with its rate (v_b - v_a).nbar: on two flat faces of any
-// orientation that is their distance exactly; a convex edge or corner, whose boundary
-// particles sit on the lattice cell of their particle, reads larger, never smaller.
+// orientation that is their distance exactly; an edge or corner facing a face reads a
+// smaller gap (its partners on the face lie sideways of the tilted nbar), which
+// contact/gap plane bounds by the tangent planes (contact_bnd_gap).
 // A real particle takes the kernel-weighted mean over the boundary particles of its own
 // body (one force computation later, extrapolated with the rate to the time it is used);
 // a pair of real particles of different bodies touches when either particle's gap is
@@ -169,8 +170,8 @@ static constexpr double GAP_NONE = 1.0e30;
 static constexpr double GAP_REACH = 2.0;
 
 inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,
-                            const double *vab, double eps, double reach2, double &c, double &g,
-                            double &gdot)
+                            const double *vab, double eps, double reach2, int plane, double &c,
+                            double &g, double &gdot)
 {
   const double m[3] = {na[0] - nb[0], na[1] - nb[1], na[2] - nb[2]};
   const double m2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
@@ -181,6 +182,34 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
   g = (xab[0] * m[0] + xab[1] * m[1] + xab[2] * m[2]) * inv;
   gdot = (vab[0] * m[0] + vab[1] * m[1] + vab[2] * m[2]) * inv;
   c = 1.0 + (fabs(g) + eps) / (sqrt(r2) + eps);
+  if (!plane) return true;
+  // contact/gap plane: the tangent planes. b lies d_a = xab.n_a in front of a's plane, a
+  // lies d_b = -xab.n_b in front of b's. A convex body lies behind each of its tangent
+  // planes, so either is a lower bound of the distance between the bodies; the projection g
+  // is not where the normals differ in direction (an edge or corner facing a face), where it
+  // turns a sideways offset into gap: a cube's corner 0.32 spacings above a face reads
+  // -0.34. The gap is never below the larger plane distance D, and a pair that a plane sees
+  // open is open: below 0 (a projection that says closed) the candidate takes min(D, -g)
+  // > 0, continuous at g = 0. Two faces have g = D: unchanged. The score stays the
+  // projection's (which partner lies most nearly straight across). Not the default: on
+  // staircase normals (a curved body with the generated normals and no fit) the steps'
+  // planes are not tangent planes of a convex surface, and the lateral momentum of lattice
+  // spheres and cylinders grows (pair_esph_solid.rst)
+  const double da = xab[0] * na[0] + xab[1] * na[1] + xab[2] * na[2];
+  const double db = -(xab[0] * nb[0] + xab[1] * nb[1] + xab[2] * nb[2]);
+  double d = da, ddot = vab[0] * na[0] + vab[1] * na[1] + vab[2] * na[2];
+  if (db > d) {
+    d = db;
+    ddot = -(vab[0] * nb[0] + vab[1] * nb[1] + vab[2] * nb[2]);
+  }
+  if (d > -g) {
+    d = -g;
+    ddot = -gdot;
+  }
+  if (d > g) {
+    g = d;
+    gdot = ddot;
+  }
   return true;
 }
 

@@ -110,6 +110,7 @@ class PairESPHSolid : public Pair {
                       // friction and rigid types, in a scene with boundary particles and
                       // more than one body
   int couple_flag;    // contact/couple: the contact force acts at the contact point
+  int gap_plane;      // contact/gap: 1 plane (bounded by the tangent planes), 0 projection
   int couple_on;      // in use (init_style()): given, with contact, in 2d or 3d
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated

@@ -162,7 +162,7 @@ void PairESPHSolid::compute_normals()
       if (rmass[i] == 0.0 && rmass[j] == 0.0) {
         if (solid && body[i] != body[j])
           bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx,
-                       GAP_EPS * h0, gap_reach2);
+                       GAP_EPS * h0, gap_reach2, gap_plane);
         continue;
       }
       if (rmass[i] > 0.0 && rmass[j] > 0.0) continue;

@@ -159,7 +159,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           // two boundary particles: the surface gap between different bodies
           if (solid && bi != body[j])
             bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
-                         gap_eps, gap_reach2);
+                         gap_eps, gap_reach2, gap_plane);
           continue;
         }
         const double *qj = hq[j];

@@ -68,6 +68,7 @@ void PairESPHSolid::set_defaults()
   cone_flag = 0;
   cone_on = 0;
   couple_flag = 0;
+  gap_plane = 0;
   couple_on = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
@@ -313,6 +314,19 @@ void PairESPHSolid::settings(int narg, char **arg)
         cone_flag = 0;
       else
         error->all(FLERR, iarg + 2, "Pair esph/solid contact/normal must be cone or mean, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "contact/gap") == 0) {
+      solid_only.emplace_back("contact/gap");
+      if (iarg + 1 >= narg)
+        utils::missing_cmd_args(FLERR, "pair_style esph/solid contact/gap", error);
+      if (strcmp(arg[iarg + 1], "plane") == 0)
+        gap_plane = 1;
+      else if (strcmp(arg[iarg + 1], "projection") == 0)
+        gap_plane = 0;
+      else
+        error->all(FLERR, iarg + 2,
+                   "Pair esph/solid contact/gap must be plane or projection, got {}",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "contact/couple") == 0) {

@@ -243,12 +243,12 @@ inline void add_gap_sums(double *ap, double w, const double *qk, double dt)
 ------------------------------------------------------------------------- */
 
 inline void bnd_gap_pair(double *ai, double *aj, const double *qi, const double *qj,
-                         const double *dx, double eps, double reach2)
+                         const double *dx, double eps, double reach2, int plane)
 {
   const double xab[3] = {-dx[0], -dx[1], -dx[2]};
   const double vab[3] = {qj[Q_V] - qi[Q_V], qj[Q_V + 1] - qi[Q_V + 1], qj[Q_V + 2] - qi[Q_V + 2]};
   double c, g, gd;
-  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, reach2, c, g, gd)) return;
+  if (!contact_bnd_gap(qi + Q_N, qj + Q_N, xab, vab, eps, reach2, plane, c, g, gd)) return;
   contact_bnd_keep(ai + B_GAP, c, g, gd);
   if (aj) contact_bnd_keep(aj + B_GAP, c, g, gd);
 }

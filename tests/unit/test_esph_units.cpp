@@ -258,54 +258,97 @@ TEST(Contact, NormalGapWeight)
   const double vab[3] = {-3.0, 1.0, 0.0};    // b approaches at 3, slides at 1
   double c, g, gd;
   const double xab[3] = {0.2, 0.7, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 0.0, 0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, 0.2);
   EXPECT_DOUBLE_EQ(gd, -3.0);
   EXPECT_NEAR(c, 1.0 + 0.2 / sqrt(0.53), 1e-15);
   // seen from b: the same gap and rate
   const double xba[3] = {-0.2, -0.7, 0.0}, vba[3] = {3.0, -1.0, 0.0};
   double c2, g2, gd2;
-  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, 0.0, 0.0, c2, g2, gd2));
+  ASSERT_TRUE(contact_bnd_gap(nj, ni, xba, vba, 0.0, 0.0, 0, c2, g2, gd2));
   EXPECT_DOUBLE_EQ(g2, g);
   EXPECT_DOUBLE_EQ(gd2, gd);
   EXPECT_DOUBLE_EQ(c2, c);
   // a face rotated by 30 degrees: still the face distance
   const double t = M_PI / 6, ra[3] = {cos(t), sin(t), 0}, rb[3] = {-cos(t), -sin(t), 0};
   const double xr[3] = {0.2 * cos(t) - 0.7 * sin(t), 0.2 * sin(t) + 0.7 * cos(t), 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, 0.0, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ra, rb, xr, vab, 0.0, 0.0, 0, c, g, gd));
   EXPECT_NEAR(g, 0.2, 1e-15);
   // overlap: negative gap
   const double xo[3] = {-0.1, 0.0, 0.0};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, 0.0, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xo, vab, 0.0, 0.0, 0, c, g, gd));
   EXPECT_DOUBLE_EQ(g, -0.1);
   EXPECT_DOUBLE_EQ(c, 2.0);
   // coincident partners score 2 and so do partners a round-off distance apart (a rotated
   // scene): the score is continuous at r = 0
   const double x0[3] = {0.0, 0.0, 0.0}, xeps[3] = {1e-19, -2e-19, 3e-20};
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, x0, vab, 1e-6, 0.0, c, g, gd));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, x0, vab, 1e-6, 0.0, 0, c, g, gd));
   EXPECT_DOUBLE_EQ(c, 2.0);
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xeps, vab, 1e-6, 0.0, c2, g2, gd2));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xeps, vab, 1e-6, 0.0, 0, c2, g2, gd2));
   EXPECT_NEAR(c2, 2.0, 1e-12);
   // side by side surfaces (normals within 60 degrees) do not face each other
   const double ns[3] = {cos(0.9), sin(0.9), 0.0};
-  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, 0.0, 0.0, c, g, gd));
+  EXPECT_FALSE(contact_bnd_gap(ni, ns, xab, vab, 0.0, 0.0, 0, c, g, gd));
   // the reach (here 2, reach2 = 4): a partner within it counts as without a limit, one
   // beyond it not at all; 0: no limit
   double c3, g3, gd3;
-  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 4.0, c3, g3, gd3));
+  ASSERT_TRUE(contact_bnd_gap(ni, nj, xab, vab, 0.0, 4.0, 0, c3, g3, gd3));
   EXPECT_NEAR(c3, 1.0 + 0.2 / sqrt(0.53), 1e-15);
   EXPECT_DOUBLE_EQ(g3, 0.2);
   const double x21[3] = {0.2, 2.1, 0.0};
-  EXPECT_FALSE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 4.0, c3, g3, gd3));
-  EXPECT_TRUE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 0.0, c3, g3, gd3));
+  EXPECT_FALSE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 4.0, 0, c3, g3, gd3));
+  EXPECT_TRUE(contact_bnd_gap(ni, nj, x21, vab, 0.0, 0.0, 0, c3, g3, gd3));
   // why: an edge (normal at 45 degrees) whose partner on a face lies 0.32 below and 2.5
-  // sideways (the face ends before it) has a negative "gap" along the tilted normal
-  // difference, closed across an open gap
+  // sideways (the face ends before it) has a negative projection along the tilted normal
+  // difference (-0.66); the face's tangent plane sees the edge 0.32 in front: open, and
+  // beyond the reach not a candidate at all
   const double ne[3] = {0.0, M_SQRT1_2, M_SQRT1_2}, nf[3] = {0.0, -1.0, 0.0};
   const double xef[3] = {0.0, 0.32, -2.5};
-  ASSERT_TRUE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 0.0, c3, g3, gd3));
-  EXPECT_LT(g3, 0.0);
-  EXPECT_FALSE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 4.0, c3, g3, gd3));
+  ASSERT_TRUE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 0.0, 0, c3, g3, gd3));
+  EXPECT_LT(g3, -0.6);
+  EXPECT_FALSE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 4.0, 0, c3, g3, gd3));
+  // contact/gap plane
+  ASSERT_TRUE(contact_bnd_gap(ne, nf, xef, vab, 0.0, 0.0, 1, c3, g3, gd3));
+  EXPECT_NEAR(g3, 0.32, 1e-15);
+  EXPECT_DOUBLE_EQ(gd3, vab[1]);    // the rate of the face's plane distance: -(v_b - v_a).n_f
+  // two faces: contact/gap plane gives the projection's gap, rate and score (open, closed,
+  // rotated, sideways)
+  for (const double *xx : {xab, xo, xr, x21}) {
+    const double *na = (xx == xr) ? ra : ni, *nb = (xx == xr) ? rb : nj;
+    double cp, gp, gdp, cq, gq, gdq;
+    ASSERT_TRUE(contact_bnd_gap(na, nb, xx, vab, 0.0, 0.0, 0, cp, gp, gdp));
+    ASSERT_TRUE(contact_bnd_gap(na, nb, xx, vab, 0.0, 0.0, 1, cq, gq, gdq));
+    EXPECT_NEAR(gq, gp, 1e-15);
+    EXPECT_NEAR(gdq, gdp, 1e-14);
+    EXPECT_DOUBLE_EQ(cq, cp);
+  }
+  // a cube's corner 0.32 above a face, its partner one spacing inwards in x and z: the
+  // projection says -0.365, the face's tangent plane 0.32 (in.gap_edge)
+  const double s3 = 1.0 / sqrt(3.0);
+  const double nface[3] = {0.0, 1.0, 0.0}, ncorner[3] = {-s3, -s3, -s3};
+  const double xcf[3] = {-1.0, 0.32, -1.0};
+  ASSERT_TRUE(contact_bnd_gap(nface, ncorner, xcf, vab, 0.0, 0.0, 0, c3, g3, gd3));
+  EXPECT_LT(g3, -0.36);
+  ASSERT_TRUE(contact_bnd_gap(nface, ncorner, xcf, vab, 0.0, 0.0, 1, c3, g3, gd3));
+  EXPECT_NEAR(g3, 0.32, 1e-15);
+  // the score is the projection's, 1 + |g| / r
+  const double gproj = (0.32 * (1.0 + s3) - 2.0 * s3) / sqrt(2.0 + 2.0 * s3);
+  EXPECT_LT(gproj, -0.36);
+  EXPECT_NEAR(c3, 1.0 + fabs(gproj) / sqrt(2.1024), 1e-12);
+  // the same corner just in contact (its plane distance -0.01): the projection, more closed,
+  // gives way to the plane distance; a closed pair stays closed
+  const double xcc[3] = {-1.0, -0.01, -1.0};
+  ASSERT_TRUE(contact_bnd_gap(nface, ncorner, xcc, vab, 0.0, 0.0, 1, c3, g3, gd3));
+  EXPECT_NEAR(g3, -0.01, 1e-15);
+  // where the projection is closed and a plane open, min(D, -g): continuous at g = 0
+  const double ncs[3] = {-M_SQRT1_2, -M_SQRT1_2, 0.0};
+  double gprev = -1.0;
+  for (int k = -20; k <= 20; k++) {
+    const double xk[3] = {-0.5 + 0.01 * k, 0.3, 0.0};
+    ASSERT_TRUE(contact_bnd_gap(nface, ncs, xk, vab, 0.0, 0.0, 1, c3, g3, gd3));
+    if (k > -20) EXPECT_LT(fabs(g3 - gprev), 0.02);
+    gprev = g3;
+  }
 
   // the candidates' mean weighted by exp(KAPPA (c - c_max)): a tie shares, a clearly worse
   // candidate (0.4 below) does not count; any order, and split into partial states merged
