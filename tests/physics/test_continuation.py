@@ -13,6 +13,7 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   turnbody the same with fix esph/boundary turn body (the bodies' rigid spins)
   couple   the same with gradient bonet/lok and contact/couple yes (the contact's couples
            passed to the neighbours: nothing carried over, all recomputed)
+  plane    the same with contact/gap plane (the gaps bounded by the tangent planes)
   rigidturn the upper block rigid and turned by fix move rotate, fixed step: the boundary
            particles of a body another fix moves turn at the end of a step, after its force
            computation (before the fix: 6e-6 in the contact force after a split, 2026-12-06)
@@ -72,6 +73,9 @@ scenes["recon"] = block_scene("cfl 0.3", "visc/recon vanleer") + ({},)
 # (fix esph/integrate's per-atom prediction), also through the staggered scheme's rate pass
 scenes["cone"] = block_scene("cfl 0.3", "contact/normal cone") + ({},)
 scenes["couple"] = block_scene("cfl 0.3", "gradient bonet/lok contact/couple yes") + ({},)
+# contact/gap plane: the gaps bounded by the tangent planes (no state of its own: the same
+# boundary particles' gaps carried over)
+scenes["plane"] = block_scene("cfl 0.3", "contact/gap plane") + ({},)
 # the upper block rigid, turned by fix move rotate about a point above it (its boundary
 # particles turn at the end of each step, after its force computation), the lower one
 # integrated; fixed step (fix move forbids the CFL step)
@@ -232,12 +236,12 @@ def check(title, result, why, nmin=NSTEPS // 5):
     c.true(f"{title}: thermo rows compared", nrow >= nmin, "at least one every 5 steps")
 
 
-for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "couple", "turnbody",
-              "rigidturn", "triclinic", "plastic", "rod", "slabs"):
+for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "couple", "plane",
+              "turnbody", "rigidturn", "triclinic", "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene in ("bonetlok", "staggered", "recon", "turnbody", "couple", "rigidturn"):
+        if scene in ("bonetlok", "staggered", "recon", "turnbody", "couple", "rigidturn", "plane"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene == "triclinic":
             dr = {k: dr[k] for k in ("full", "split2", "balance")}
