@@ -191,10 +191,11 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
   // -0.34. The gap is never below the larger plane distance D, and a pair that a plane sees
   // open is open: below 0 (a projection that says closed) the candidate takes min(D, -g)
   // > 0, continuous at g = 0. Two faces have g = D: unchanged. The score stays the
-  // projection's (which partner lies most nearly straight across). Not the default: on
-  // staircase normals (a curved body with the generated normals and no fit) the steps'
-  // planes are not tangent planes of a convex surface, and the lateral momentum of lattice
-  // spheres and cylinders grows (pair_esph_solid.rst)
+  // projection's (which partner lies most nearly straight across); the candidate is the
+  // same seen from a and from b. Not the default yet (pair_esph_solid.rst, bench/
+  // contact_offsets): on staircase normals (a curved body with the generated normals and no
+  // fit) the steps' planes are not tangent planes of a convex surface, and lattice spheres
+  // leave with 1.7 times the lateral momentum
   const double da = xab[0] * na[0] + xab[1] * na[1] + xab[2] * na[2];
   const double db = -(xab[0] * nb[0] + xab[1] * nb[1] + xab[2] * nb[2]);
   double d = da, ddot = vab[0] * na[0] + vab[1] * na[1] + vab[2] * na[2];
