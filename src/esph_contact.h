@@ -185,14 +185,18 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
   if (!plane) return true;
   // contact/gap plane: the tangent planes. b lies d_a = xab.n_a in front of a's plane, a
   // lies d_b = -xab.n_b in front of b's. A convex body lies behind each of its tangent
-  // planes, so either is a lower bound of the distance between the bodies; the projection g
-  // is not where the normals differ in direction (an edge or corner facing a face), where it
-  // turns a sideways offset into gap: a cube's corner 0.32 spacings above a face reads
-  // -0.34. The gap is never below the larger plane distance D, and a pair that a plane sees
-  // open is open: below 0 (a projection that says closed) the candidate takes min(D, -g)
-  // > 0, continuous at g = 0. Two faces have g = D: unchanged. The score stays the
-  // projection's (which partner lies most nearly straight across); the candidate is the
-  // same seen from a and from b. Not the default yet (pair_esph_solid.rst, bench/
+  // planes, so d_b > 0 is a lower bound of a's distance from b's body, d_a > 0 of b's from
+  // a's (a negative one bounds nothing: a point beside a body lies behind the supporting
+  // plane of an edge further along). The projection g is not where the normals differ in
+  // direction (an edge or corner facing a face), where it turns a sideways offset into gap:
+  // a cube's corner 0.32 spacings above a face reads -0.34. The gap is never below the
+  // larger plane distance D, and a pair that a plane sees open is open: below 0 (a
+  // projection that says closed) the candidate takes min(D, -g) > 0, continuous at g = 0.
+  // Two faces have g = D: unchanged. The score stays the projection's (which partner lies
+  // most nearly straight across); the candidate is the same seen from a and from b. What
+  // is left of the early touch (0.06-0.21 spacings, bench/gap_lead) is that score: an edge
+  // facing the other body's corner 1.5 spacings along it has both planes "penetrated" (D =
+  // -0.32) and outranks the edge straight across (in.gap_edge at a gap of one spacing). Not the default yet (pair_esph_solid.rst, bench/
   // contact_offsets): on staircase normals (a curved body with the generated normals and no
   // fit) the steps' planes are not tangent planes of a convex surface, and lattice spheres
   // leave with 1.7 times the lateral momentum
