@@ -196,10 +196,11 @@ inline bool contact_bnd_gap(const double *na, const double *nb, const double *xa
   // most nearly straight across); the candidate is the same seen from a and from b. What
   // is left of the early touch (0.06-0.21 spacings, bench/gap_lead) is that score: an edge
   // facing the other body's corner 1.5 spacings along it has both planes "penetrated" (D =
-  // -0.32) and outranks the edge straight across (in.gap_edge at a gap of one spacing). Not the default yet (pair_esph_solid.rst, bench/
-  // contact_offsets): on staircase normals (a curved body with the generated normals and no
-  // fit) the steps' planes are not tangent planes of a convex surface, and lattice spheres
-  // leave with 1.7 times the lateral momentum
+  // -0.32) and outranks the edge straight across (in.gap_edge at a gap of one spacing).
+  // Not the default yet (pair_esph_solid.rst, bench/contact_offsets): on staircase normals
+  // (a curved body with the generated normals and no fit) the steps' planes are not tangent
+  // planes of a convex surface, and lattice spheres leave with 1.7 times the lateral
+  // momentum
   const double da = xab[0] * na[0] + xab[1] * na[1] + xab[2] * na[2];
   const double db = -(xab[0] * nb[0] + xab[1] * nb[1] + xab[2] * nb[2]);
   double d = da, ddot = vab[0] * na[0] + vab[1] * na[1] + vab[2] * na[2];

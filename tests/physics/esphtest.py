@@ -56,6 +56,25 @@ def run(args, infile, variables=None, np=1, log="log.lammps", timeout=900, flags
     return text
 
 
+def run_fresh(lmp, infile, variables=None, timeout=1800):
+    """run(): the input infile (an absolute path) copied into a fresh temporary directory, so
+    that parallel runs of one input neither share a log nor write into the source tree (the
+    benches that run many variants side by side); return the log text"""
+    import tempfile
+    import types
+    with tempfile.TemporaryDirectory() as tmp:
+        a = types.SimpleNamespace(lmp=lmp, workdir=tmp, mpirun="mpirun")
+        path = write_input(a, os.path.basename(infile), open(infile).read())
+        return run(a, path, variables, timeout=timeout)
+
+
+def rule_keywords(name):
+    """pair_style esph/solid keywords of a contact rule named on a bench's command line:
+    'default' none, 'projection' contact/gap projection, anything else as written"""
+    name = name.strip()
+    return {"default": "", "projection": "contact/gap projection"}.get(name, name)
+
+
 def write_input(args, name, text):
     path = os.path.join(args.workdir, name)
     with open(path, "w") as f:
