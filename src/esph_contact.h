@@ -169,6 +169,23 @@ static constexpr double GAP_NONE = 1.0e30;
 
 static constexpr double GAP_REACH = 2.0;
 
+/* contact/gap touch (the default): two bodies have no surface gap, and so no interaction,
+   until two of their real particles touch: the cubes of side s (the spacing) around them,
+   aligned with the box, meet, max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s. From then
+   on the projection decides, as from a touching start; the bodies stay coupled while both
+   have an engaged real particle. On a lattice aligned with the box this is where the faces,
+   edges and corners of the particles' cells meet, at any lattice offset; a body turned off
+   the axes touches earlier (the rule is then the projection's, which couples edges and
+   corners up to 0.26-0.32 spacings before the faces meet, bench/gap_lead). */
+
+static constexpr double TOUCH_TOL = 0.02;
+
+inline bool touch_pair(const double *xij, double s)
+{
+  const double c = std::max(std::max(fabs(xij[0]), fabs(xij[1])), fabs(xij[2]));
+  return c <= (1.0 + TOUCH_TOL) * s;
+}
+
 inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,
                             const double *vab, double eps, double reach2, int plane, double &c,
                             double &g, double &gdot)

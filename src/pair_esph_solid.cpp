@@ -79,6 +79,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   turn_body = 0;
   dt_cfl = 0.0;
   gap_reach2 = 0.0;
+  touch_on_run = 0;
   dt_step = 0.0;
   dt_keep = 0;
   ncontact_pairs = ntouch_pairs = 0;
@@ -325,6 +326,15 @@ void PairESPHSolid::init_cone()
     body_range(gmin, gmax, anybnd);
     cone_on = anybnd && (gmin != gmax);
   }
+  // contact/gap touch: only where two bodies can touch
+  touch_on_run = 0;
+  if (contact == CONTACT_SOLID && gap_touch) {
+    int gmin, gmax, anybnd;
+    body_range(gmin, gmax, anybnd);
+    touch_on_run = anybnd && (gmin != gmax);
+  }
+  touch_engaged.clear();
+  touch_pairs.clear();
 }
 
 /* ----------------------------------------------------------------------
@@ -624,7 +634,14 @@ void PairESPHSolid::compute(int eflag, int vflag)
     error->one(FLERR,
                "Pair esph/solid: internal error, {} values per atom to communicate, {} sized",
                nforward, comm_forward);
-  if (bnd && !normals_valid) compute_normals();
+  const int touch = bnd && touch_on_run;
+  if (bnd && !normals_valid) {
+    if (touch) {
+      simd_active = 0;
+      update_touch();
+    }
+    compute_normals();
+  }
   // (before hoist(), which then also writes the slots only the vector pass reads)
   simd_active = simd_ready();
   hoist();
@@ -646,6 +663,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
     simd_pack();
     simd_split(bnd);
   }
+  if (touch) update_touch();
   pair_pass(bnd);
 
   if (force->newton_pair) {

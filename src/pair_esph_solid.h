@@ -112,6 +112,13 @@ class PairESPHSolid : public Pair {
   int couple_flag;    // contact/couple: the contact force acts at the contact point
   int gap_plane;      // contact/gap: 1 plane (bounded by the tangent planes), 0 projection
   int couple_on;      // in use (init_style()): given, with contact, in 2d or 3d
+  // contact/gap: touch (update_touch()) on the projection, else the projection alone; the
+  // touch in use where contact solid meets two bodies or more (init_style())
+  int gap_touch, touch_on_run;
+  // the bodies with an engaged real particle, and the pairs of bodies (smaller ID first) two
+  // of whose real particles touch, on every rank
+  std::vector<int> touch_engaged;
+  std::vector<std::pair<int, int>> touch_pairs;
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
   double **cpl;
@@ -238,6 +245,8 @@ class PairESPHSolid : public Pair {
   void init_turn();
   void turn_with_bodies();
   void compute_normals();
+  void update_touch();
+  bool touch_on(int, int) const;
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;

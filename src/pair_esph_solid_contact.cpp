@@ -30,6 +30,7 @@
 #include "neigh_list.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -115,6 +116,84 @@ void PairESPHSolid::store_bnd_gap(int i)
 }
 
 /* ----------------------------------------------------------------------
+   contact/gap touch: the bodies with an engaged real particle (by the
+   engagements this computation starts from) and the pairs of bodies two of
+   whose real particles touch now (touch_pair()), gathered on every rank.
+   Called before compute_normals() at the start of a run (the whole half
+   list) and before the pair pass (the split list where the vector pass
+   runs): the same positions, the same pairs
+------------------------------------------------------------------------- */
+
+namespace {
+// the values of every rank, sorted, without repeats
+template <typename T> void gather_sorted(std::vector<T> &v, int nints, MPI_Comm world)
+{
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  int nprocs;
+  MPI_Comm_size(world, &nprocs);
+  const int n = (int) v.size() * nints;
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  static_assert(sizeof(T) == sizeof(int) || sizeof(T) == 2 * sizeof(int), "ints");
+  std::vector<T> all(total / nints);
+  MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  v.swap(all);
+}
+}    // namespace
+
+void PairESPHSolid::update_touch()
+{
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const double sb = boundary_spacing();
+  const double s = (sb > 0.0) ? sb : h0;
+
+  touch_engaged.clear();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (rmass[i] > 0.0 && state->eng[i] > 0.0) touch_engaged.push_back(body[i]);
+  touch_pairs.clear();
+  // the pairs of the scalar loop (simd_split(): the cross-body pairs among them) where the
+  // vector pass runs, else the whole half list
+  const int split = simd_active && (int) simd_first.size() == list->inum + 1;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (rmass[i] <= 0.0) continue;
+    const int bi = body[i];
+    const int *jlist = split ? simd_j.data() + simd_first[ii] : list->firstneigh[i];
+    const int jnum = split ? simd_first[ii + 1] - simd_first[ii] : list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (body[j] == bi || rmass[j] <= 0.0) continue;
+      const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      if (touch_pair(xij, s))
+        touch_pairs.emplace_back(std::min(bi, body[j]), std::max(bi, body[j]));
+    }
+  }
+  gather_sorted(touch_engaged, 1, world);
+  gather_sorted(touch_pairs, 2, world);
+}
+
+/* the boundary particles of bodies bi and bj have surface gaps */
+
+bool PairESPHSolid::touch_on(int bi, int bj) const
+{
+  if (std::binary_search(touch_engaged.begin(), touch_engaged.end(), bi) &&
+      std::binary_search(touch_engaged.begin(), touch_engaged.end(), bj))
+    return true;
+  return std::binary_search(touch_pairs.begin(), touch_pairs.end(),
+                            std::make_pair(std::min(bi, bj), std::max(bi, bj)));
+}
+
+/* ----------------------------------------------------------------------
    normals (eq. 30) and depths of real particles from the boundary particles
    of their own body; used at the start of a run, later they come with the
    regular pair loop
@@ -143,6 +222,7 @@ void PairESPHSolid::compute_normals()
   }
   comm_stage = COMM_NORMALS;
   comm->forward_comm(this, 7);
+  const int touch = touch_on_run;
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
     if (qcol_n >= 0)
@@ -160,7 +240,7 @@ void PairESPHSolid::compute_normals()
       const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       if (rsq >= cutsq_global) continue;
       if (rmass[i] == 0.0 && rmass[j] == 0.0) {
-        if (solid && body[i] != body[j])
+        if (solid && body[i] != body[j] && (!touch || touch_on(body[i], body[j])))
           bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx,
                        GAP_EPS * h0, gap_reach2, gap_plane);
         continue;

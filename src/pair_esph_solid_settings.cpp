@@ -69,6 +69,7 @@ void PairESPHSolid::set_defaults()
   cone_on = 0;
   couple_flag = 0;
   gap_plane = 0;
+  gap_touch = 1;
   couple_on = 0;
   correct_flag = CORRECT_RATE;
   astress_flag = 0;
@@ -320,13 +321,14 @@ void PairESPHSolid::settings(int narg, char **arg)
       solid_only.emplace_back("contact/gap");
       if (iarg + 1 >= narg)
         utils::missing_cmd_args(FLERR, "pair_style esph/solid contact/gap", error);
-      if (strcmp(arg[iarg + 1], "plane") == 0)
+      gap_plane = gap_touch = 0;
+      if (strcmp(arg[iarg + 1], "touch") == 0)
+        gap_touch = 1;
+      else if (strcmp(arg[iarg + 1], "plane") == 0)
         gap_plane = 1;
-      else if (strcmp(arg[iarg + 1], "projection") == 0)
-        gap_plane = 0;
-      else
+      else if (strcmp(arg[iarg + 1], "projection") != 0)
         error->all(FLERR, iarg + 2,
-                   "Pair esph/solid contact/gap must be plane or projection, got {}",
+                   "Pair esph/solid contact/gap must be touch, projection or plane, got {}",
                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "contact/couple") == 0) {

@@ -208,7 +208,7 @@ CASES = [
     ("ps_cnormal_bogus", [K("pair", " contact/normal sharp")], "error:contact/normal must be cone or mean"),
     ("ps_cnormal_mean", [K("pair", " contact/normal mean")], "same"),
     ("ps_cgap_missing", [K("pair", " contact/gap")], "error:missing argument"),
-    ("ps_cgap_bogus", [K("pair", " contact/gap tangent")], "error:contact/gap must be plane or projection"),
+    ("ps_cgap_bogus", [K("pair", " contact/gap tangent")], "error:contact/gap must be touch, projection or plane"),
     ("ps_cgap_projection", [K("pair", " contact/gap projection")], "same"),
     ("ps_cgap_plane", [K("pair", " contact/gap plane")], "runs"),
     ("ps_cgap_off", [K("pair", " contact off contact/gap plane")],

@@ -70,9 +70,11 @@ def run_fresh(lmp, infile, variables=None, timeout=1800):
 
 def rule_keywords(name):
     """pair_style esph/solid keywords of a contact rule named on a bench's command line:
-    'default' none, 'projection' contact/gap projection, anything else as written"""
+    'default' none, 'touch' contact/gap touch (the default), 'projection' contact/gap
+    projection, anything else as written"""
     name = name.strip()
-    return {"default": "", "projection": "contact/gap projection"}.get(name, name)
+    return {"default": "", "touch": "contact/gap touch",
+            "projection": "contact/gap projection"}.get(name, name)
 
 
 def write_input(args, name, text):

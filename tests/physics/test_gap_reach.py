@@ -1,15 +1,17 @@
 #!/usr/bin/env python3
-"""The surface gap is a property of the boundary particles, not of the smoothing length
-(tests/physics/in.gap_edge; doc/pair_esph_solid.rst, "Surface gap"): a small iron block
-0.32 spacings above a larger one, approaching at 60 m/s, the larger block's top edges one
-to two spacings beyond the smaller one's sides. A larger h or hvar widens the neighbour
-list; the gap's partners stay within two spacings (the kernel support at h = spacing).
-Before that limit (found by a hostile round, 2026-12-06) the edges took the "gap" of
-oblique partners further out, negative, and with h = 1.5 or 2 spacings or hvar 1.5 the
-blocks pushed each other from step 0 across the open gap: 13 / 40 / 14 N and 221 / 2099 /
-112 interacting pairs at step 0, first touch at t = 0. With contact/gap plane the corners
-touch within a tenth of a spacing of the faces' meeting (the default projection: 0.26
-spacings before it), on 1 and 2 ranks. About 30 seconds."""
+"""The surface gap is a property of the boundary particles, and the touch of two bodies one
+of their real particles, not of the smoothing length (tests/physics/in.gap_edge;
+doc/pair_esph_solid.rst, "Surface gap" and "Touch"): a small iron block 0.32 spacings
+above a larger one, approaching at 60 m/s, the larger block's top edges one to two
+spacings beyond the smaller one's sides. A larger h or hvar widens the neighbour list; the
+gap's partners stay within two spacings (the kernel support at h = spacing). Before that
+limit (found by a hostile round, 2026-12-06) the edges took the "gap" of oblique partners
+further out, negative, and with h = 1.5 or 2 spacings or hvar 1.5 the blocks pushed each
+other from step 0 across the open gap: 13 / 40 / 14 N and 221 / 2099 / 112 interacting
+pairs at step 0, first touch at t = 0. The default contact/gap touch couples the bodies
+when their particles' cells meet (the faces 0.02 spacings apart), whatever h; the
+projection alone couples the corners 0.26 spacings before the faces meet, contact/gap
+plane 0.066. On 1 and 2 ranks. About 30 seconds."""
 
 import esphtest as et
 
@@ -25,13 +27,22 @@ def case(name, np=1, **var):
     return s
 
 
-ref = case("h1", hfac=1.0)
-c.true("h = spacing: touches within the run", ref["t_first_us"] > 0.0,
-       "the reference for the other runs (measured 0.26 us)")
+# the faces meet at 0.32 spacings / 60 m/s = 1.333 us
+T_MEET = 0.32 * 2.5e-4 / 60.0 * 1e6
+SPACING_US = 2.5e-4 / 60.0 * 1e6    # the time to close one spacing [us]
+NSTEPS = 200
+
+ref = case("h1", hfac=1.0, nsteps=NSTEPS)
+c.true("h = spacing: touches within the run", 0.0 < ref["t_first_us"] <= T_MEET + DT_US,
+       f"the reference for the other runs; the faces meet at {T_MEET:.3f} us (measured 1.33 us)")
+c.less("h = spacing (contact/gap touch): gap at the first touch [spacings]",
+       abs(T_MEET - ref["t_first_us"]) / SPACING_US, 0.03,
+       "the cells of the particles meet with the faces (tolerance 0.02 spacings, plus one step "
+       "of 0.0024; measured 0.0168)")
 res = {}
 for name, var in (("h1.5", dict(hfac=1.5)), ("h2", dict(hfac=2.0)),
                   ("hvar1.5", dict(pextra="hvar 1.5"))):
-    s = res[name] = case(name, **var)
+    s = res[name] = case(name, nsteps=NSTEPS, **var)
     c.true(f"{name}: no interacting pair across the open gap at step 0",
            s["pairs0"] == 0 and s["force0"] == 0.0,
            "the faces are 0.32 spacings apart (before the limit: 221 / 2099 / 112 pairs)")
@@ -42,32 +53,34 @@ for name, var in (("h1.5", dict(hfac=1.5)), ("h2", dict(hfac=2.0)),
 hv = res["hvar1.5"]
 c.less("hvar 1.5: first touch as at h = spacing [us]", abs(hv["t_first_us"] - ref["t_first_us"]),
        0.5 * DT_US, "h starts at h0 = spacing, and so do the gaps")
-c.less("hvar 1.5: contact force after 40 steps against h = spacing, relative",
-       abs(hv["force"] / ref["force"] - 1.0), 0.01,
-       "h changes only by the compression of the last 14 steps (measured 7e-4)")
-two = case("hvar1.5_np2", np=2, pextra="hvar 1.5")
+two = case("hvar1.5_np2", np=2, pextra="hvar 1.5", nsteps=NSTEPS)
 c.true("hvar 1.5: 2 ranks touch at the step of 1", two["t_first_us"] == hv["t_first_us"],
-       "the same gap partners on every rank")
-c.less("hvar 1.5: contact force after 40 steps, 2 ranks against 1, relative",
+       "the same touch and gap partners on every rank")
+c.less(f"hvar 1.5: contact force after {NSTEPS} steps, 2 ranks against 1, relative",
        abs(two["force"] / hv["force"] - 1.0), 1e-10, "round-off")
 
-# contact/gap plane (pair_esph_solid.rst, "Surface gap"): a candidate's gap is bounded by the
-# tangent planes of the two boundary particles. The small block's bottom corners read the
-# projection's -0.34 spacings with the faces 0.32 apart, and the blocks touch at 0.26 us
-# (the faces 0.26 spacings apart); the larger block's face plane reads the corners' true
-# 0.32. The faces meet at 0.32 spacings / 60 m/s = 1.333 us.
-T_MEET = 0.32 * 2.5e-4 / 60.0 * 1e6
-SPACING_US = 2.5e-4 / 60.0 * 1e6    # the time to close one spacing [us]
-pl = case("plane", pextra="contact/gap plane", nsteps=200)
+# contact/gap projection (the rule under the touch): the small block's bottom corners read
+# -0.34 spacings with the faces 0.32 apart, and the blocks touch at 0.26 us (the faces 0.26
+# spacings apart). contact/gap plane (pair_esph_solid.rst, "Surface gap"): a candidate's gap
+# is bounded by the tangent planes of the two boundary particles; the larger block's face
+# plane reads the corners' true 0.32.
+pr = case("projection", pextra="contact/gap projection", nsteps=NSTEPS)
+c.less("contact/gap projection: first touch before the faces meet [spacings]",
+       -(T_MEET - pr["t_first_us"]) / SPACING_US, -0.2,
+       "the projection on the tilted normals of the corners (measured 0.26; the reason for the "
+       "touch rule)")
+c.true("contact/gap projection: no interacting pair at step 0", pr["pairs0"] == 0 and
+       pr["force0"] == 0.0, "the faces are 0.32 spacings apart")
+pl = case("plane", pextra="contact/gap plane", nsteps=NSTEPS)
 c.true("contact/gap plane: touches within the run", 0.0 < pl["t_first_us"] <= T_MEET + DT_US,
        f"the faces meet at {T_MEET:.3f} us (measured 1.06 us)")
 c.less("contact/gap plane: gap at the first touch [spacings]",
        (T_MEET - pl["t_first_us"]) / SPACING_US, 0.1,
        "corners and edges touch within a tenth of a spacing of the faces (measured 0.066; "
-       f"the projection: {(T_MEET - ref['t_first_us']) / SPACING_US:.2f})")
+       f"the projection: {(T_MEET - pr['t_first_us']) / SPACING_US:.2f})")
 c.true("contact/gap plane: no interacting pair at step 0", pl["pairs0"] == 0 and
        pl["force0"] == 0.0, "the faces are 0.32 spacings apart")
-pl2 = case("plane_np2", np=2, pextra="contact/gap plane", nsteps=200)
+pl2 = case("plane_np2", np=2, pextra="contact/gap plane", nsteps=NSTEPS)
 c.true("contact/gap plane: 2 ranks touch at the step of 1", pl2["t_first_us"] == pl["t_first_us"],
        "the same candidates on every rank")
 c.less("contact/gap plane: contact force after 200 steps, 2 ranks against 1, relative",

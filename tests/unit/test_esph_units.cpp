@@ -472,6 +472,31 @@ TEST(Contact, RotateBySpin)
   for (int d = 0; d < 3; d++) EXPECT_EQ(n[d], n0[d]);
 }
 
+// contact/gap touch: two real particles of different bodies touch when their cells (cubes of
+// side s aligned with the box) meet: face to face at any sideways offset, along an edge and
+// at a corner; a gap of more than TOUCH_TOL spacings in any one axis keeps them apart, in
+// either direction and at any scale
+TEST(Contact, TouchPair)
+{
+  for (double s : {1.0, 2.5e-4}) {
+    auto touch = [s](double x, double y, double z) {
+      const double xij[3] = {x * s, y * s, z * s};
+      return touch_pair(xij, s);
+    };
+    EXPECT_TRUE(touch(1.0, 0.0, 0.0));
+    EXPECT_TRUE(touch(-1.0, 0.0, 0.0));
+    EXPECT_TRUE(touch(1.0, 0.5, -0.5));    // lattices offset sideways by half a spacing
+    EXPECT_TRUE(touch(1.0, 1.0, 0.0));     // cells sharing an edge
+    EXPECT_TRUE(touch(-1.0, 1.0, 1.0));    // and a corner
+    EXPECT_TRUE(touch(0.3, 0.2, 0.9));     // overlapping
+    EXPECT_TRUE(touch(1.0 + 0.99 * TOUCH_TOL, 0.0, 0.0));
+    EXPECT_FALSE(touch(1.0 + 1.01 * TOUCH_TOL, 0.0, 0.0));
+    EXPECT_FALSE(touch(0.0, -1.0 - 1.01 * TOUCH_TOL, 0.0));
+    EXPECT_FALSE(touch(0.2, 0.1, 1.0 + 1.01 * TOUCH_TOL));
+    EXPECT_FALSE(touch(1.1, 1.1, 0.0));    // diagonal, 0.1 apart in both axes
+  }
+}
+
 // The rigid spin of a body (fix esph/boundary turn body): a cloud of particles of unequal
 // masses in a rigid motion v = V + omega x (x - c0) gives back omega from its sums
 // (add_body_sum(), as body_sums() builds them) to round-off, far from
