@@ -174,9 +174,10 @@ static constexpr double GAP_REACH = 2.0;
    aligned with the box, meet, max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s. From then
    on the projection decides, as from a touching start; the bodies stay coupled while both
    have an engaged real particle. On a lattice aligned with the box this is where the faces,
-   edges and corners of the particles' cells meet, at any lattice offset; a body turned off
-   the axes touches earlier (the rule is then the projection's, which couples edges and
-   corners up to 0.26-0.32 spacings before the faces meet, bench/gap_lead). */
+   edges and corners of the particles' cells meet, at any lattice offset. The cells are the
+   box's: of a body turned off the axes they meet earlier where faces meet (the projection
+   then decides; alone it couples edges and corners 0.26-0.32 spacings before the faces
+   meet, bench/gap_lead) and later where turned edges or corners meet head-on. */
 
 static constexpr double TOUCH_TOL = 0.02;
 

@@ -12,7 +12,9 @@ no momentum across (issue 12: a contact that holds on faces, edges and corners).
   momentum (0.53 with the projection's early touch): a finding, reported and guarded
   against getting worse;
 - contact/normal cone: the face's normal, 0.029 (0.033 with the projection).
-About 20 seconds."""
+- a cube turned corner first onto a face (in.corner_face) couples when the corner meets
+  the face, as with the projection.
+About 30 seconds."""
 
 import esphtest as et
 
@@ -71,6 +73,24 @@ for np_ in (2, 4):
            "the touching pairs of bodies gathered on every rank")
     c.less(f"np {np_}: momentum across against np 1, relative",
            abs(s["p1y_rel"] / g["p1y_rel"] - 1.0), 1e-9, "round-off (printed to 7 digits)")
+# a cube turned corner first (tests/physics/in.corner_face): the touch is decided by the box's
+# cells, which the turned cube's are not; its corner must still couple when it meets the face
+CF = et.source_input(a, "in.corner_face")
+cf = {}
+for name, extra in (("touch", ""), ("projection", "contact/gap projection")):
+    cf[name] = et.summary(et.run(a, CF, {"pextra": extra}, log=f"log.corner_{name}"),
+                          "CORNER_FACE")
+    print(f"INFO turned corner, {name}: {cf[name]}")
+c.less("turned corner on a face: first touch within 0.03 spacings of the meeting [spacings]",
+       abs(T_MEET - cf["touch"]["t_first"]) / SPACING_US, 0.03,
+       f"the corner meets the face at {T_MEET:.2f} us (measured 3.977 us, 0.006 spacings)")
+c.less("turned corner on a face: first touch not after the projection's [us]",
+       cf["touch"]["t_first"] - cf["projection"]["t_first"], 1e-9,
+       "the box's cells meet no later here (measured the same step)")
+c.true("turned corner on a face: one contact episode", cf["touch"]["episodes"] == 1,
+       "hit and rebound")
+c.less("turned corner on a face: energy drift, relative", abs(cf["touch"]["edrift"]), 1e-3,
+       "contact keeps the energy (measured 5.7e-5)")
 c.less("cone rule: momentum across / impact momentum", abs(res["cone"]["p1y_rel"]), 0.05,
        "exact 0; measured 0.033 (0.025 at 0.1 mm): the face's normal for an edge on a face")
 c.less("mean normal: momentum across / impact momentum (finding)", abs(res["mean"]["p1y_rel"]),
