@@ -169,15 +169,18 @@ static constexpr double GAP_NONE = 1.0e30;
 
 static constexpr double GAP_REACH = 2.0;
 
-/* contact/gap touch (the default): two bodies have no surface gap, and so no interaction,
-   until two of their real particles touch: the cubes of side s (the spacing) around them,
-   aligned with the box, meet, max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s. From then
-   on the projection decides, as from a touching start; the bodies stay coupled while both
-   have an engaged real particle. On a lattice aligned with the box this is where the faces,
-   edges and corners of the particles' cells meet, at any lattice offset. The cells are the
-   box's: of a body turned off the axes they meet earlier where faces meet (the projection
-   then decides; alone it couples edges and corners 0.26-0.32 spacings before the faces
-   meet, bench/gap_lead) and later where turned edges or corners meet head-on. */
+/* contact/gap touch (the default): the real particles of a body have no surface gap, and so
+   no interaction with another body, until the body touches one: two real particles of
+   different bodies whose cubes of side s (the spacing), aligned with the box, meet,
+   max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s; the body stays so while it has an
+   engaged real particle. From then on the projection decides, as from a touching start (its
+   boundary particles keep their gaps all along, so the gaps have their rates and history
+   when the touch comes). On a lattice aligned with the box this is where the faces, edges
+   and corners of the particles' cells meet, at any lattice offset. The cells are the box's:
+   of a body turned off the axes they meet earlier where faces meet (the projection then
+   decides; alone it couples edges and corners 0.26-0.32 spacings before the faces meet,
+   bench/gap_lead) and later where turned edges or corners meet head-on. A body that
+   touches one body couples by the projection with any other in reach. */
 
 static constexpr double TOUCH_TOL = 0.02;
 

@@ -333,8 +333,7 @@ void PairESPHSolid::init_cone()
     body_range(gmin, gmax, anybnd);
     touch_on_run = anybnd && (gmin != gmax);
   }
-  touch_engaged.clear();
-  touch_pairs.clear();
+  touch_bodies.clear();
 }
 
 /* ----------------------------------------------------------------------

@@ -27,7 +27,6 @@ PairStyle(esph/solid,PairESPHSolid);
 
 #include <array>
 #include <map>
-#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -115,10 +114,8 @@ class PairESPHSolid : public Pair {
   // contact/gap: touch (update_touch()) on the projection, else the projection alone; the
   // touch in use where contact solid meets two bodies or more (init_style())
   int gap_touch, touch_on_run;
-  // the bodies with an engaged real particle, and the pairs of bodies (smaller ID first) two
-  // of whose real particles touch, on every rank
-  std::vector<int> touch_engaged;
-  std::vector<std::pair<int, int>> touch_pairs;
+  // the bodies that touch another body or have an engaged real particle, on every rank
+  std::vector<int> touch_bodies;
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
   double **cpl;
@@ -246,7 +243,7 @@ class PairESPHSolid : public Pair {
   void turn_with_bodies();
   void compute_normals();
   void update_touch();
-  bool touch_on(int, int) const;
+  bool touch_body(int) const;
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;

@@ -57,7 +57,9 @@ void PairESPHSolid::store_normal(int i)
     state->depth[i] = 0.0;
   }
   // the gap from the boundary particles of the own body, at the time of this computation
-  if (contact == CONTACT_SOLID && a[A_GW] > 0.0) {
+  // (contact/gap touch: none until the body touches another; its boundary particles keep
+  // their gaps, so that the gap has its rate and history when the touch comes)
+  if (contact == CONTACT_SOLID && a[A_GW] > 0.0 && (!touch_on_run || touch_body(state->body[i]))) {
     state->gap[i] = a[A_GG] / a[A_GW];
     state->gapv[i] = a[A_GV] / a[A_GW];
   } else {
@@ -116,38 +118,13 @@ void PairESPHSolid::store_bnd_gap(int i)
 }
 
 /* ----------------------------------------------------------------------
-   contact/gap touch: the bodies with an engaged real particle (by the
-   engagements this computation starts from) and the pairs of bodies two of
-   whose real particles touch now (touch_pair()), gathered on every rank.
+   contact/gap touch: the bodies that touch another body now (two real
+   particles' cells meet, touch_pair()) or have an engaged real particle (by
+   the engagements this computation starts from), gathered on every rank.
    Called before compute_normals() at the start of a run (the whole half
    list) and before the pair pass (the split list where the vector pass
-   runs): the same positions, the same pairs
+   runs): the same positions, the same bodies
 ------------------------------------------------------------------------- */
-
-namespace {
-// the values of every rank, sorted, without repeats
-template <typename T> void gather_sorted(std::vector<T> &v, int nints, MPI_Comm world)
-{
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  int nprocs;
-  MPI_Comm_size(world, &nprocs);
-  const int n = (int) v.size() * nints;
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  static_assert(sizeof(T) == sizeof(int) || sizeof(T) == 2 * sizeof(int), "ints");
-  std::vector<T> all(total / nints);
-  MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  v.swap(all);
-}
-}    // namespace
 
 void PairESPHSolid::update_touch()
 {
@@ -157,10 +134,9 @@ void PairESPHSolid::update_touch()
   const double sb = boundary_spacing();
   const double s = (sb > 0.0) ? sb : h0;
 
-  touch_engaged.clear();
+  touch_bodies.clear();
   for (int i = 0; i < atom->nlocal; i++)
-    if (rmass[i] > 0.0 && state->eng[i] > 0.0) touch_engaged.push_back(body[i]);
-  touch_pairs.clear();
+    if (rmass[i] > 0.0 && state->eng[i] > 0.0) touch_bodies.push_back(body[i]);
   // the pairs of the scalar loop (simd_split(): the cross-body pairs among them) where the
   // vector pass runs, else the whole half list
   const int split = simd_active && (int) simd_first.size() == list->inum + 1;
@@ -174,23 +150,36 @@ void PairESPHSolid::update_touch()
       const int j = jlist[jj] & NEIGHMASK;
       if (body[j] == bi || rmass[j] <= 0.0) continue;
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (touch_pair(xij, s))
-        touch_pairs.emplace_back(std::min(bi, body[j]), std::max(bi, body[j]));
+      if (touch_pair(xij, s)) {
+        touch_bodies.push_back(bi);
+        touch_bodies.push_back(body[j]);
+      }
     }
   }
-  gather_sorted(touch_engaged, 1, world);
-  gather_sorted(touch_pairs, 2, world);
+  // every rank's bodies, sorted, without repeats
+  std::sort(touch_bodies.begin(), touch_bodies.end());
+  touch_bodies.erase(std::unique(touch_bodies.begin(), touch_bodies.end()), touch_bodies.end());
+  const int n = (int) touch_bodies.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<int> all(total);
+  MPI_Allgatherv(touch_bodies.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
+                 world);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  touch_bodies.swap(all);
 }
 
-/* the boundary particles of bodies bi and bj have surface gaps */
+/* body b touches another body: its real particles take surface gaps */
 
-bool PairESPHSolid::touch_on(int bi, int bj) const
+bool PairESPHSolid::touch_body(int b) const
 {
-  if (std::binary_search(touch_engaged.begin(), touch_engaged.end(), bi) &&
-      std::binary_search(touch_engaged.begin(), touch_engaged.end(), bj))
-    return true;
-  return std::binary_search(touch_pairs.begin(), touch_pairs.end(),
-                            std::make_pair(std::min(bi, bj), std::max(bi, bj)));
+  return std::binary_search(touch_bodies.begin(), touch_bodies.end(), b);
 }
 
 /* ----------------------------------------------------------------------
@@ -222,7 +211,6 @@ void PairESPHSolid::compute_normals()
   }
   comm_stage = COMM_NORMALS;
   comm->forward_comm(this, 7);
-  const int touch = touch_on_run;
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
     if (qcol_n >= 0)
@@ -240,7 +228,7 @@ void PairESPHSolid::compute_normals()
       const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       if (rsq >= cutsq_global) continue;
       if (rmass[i] == 0.0 && rmass[j] == 0.0) {
-        if (solid && body[i] != body[j] && (!touch || touch_on(body[i], body[j])))
+        if (solid && body[i] != body[j])
           bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, hq[i], hq[j], dx,
                        GAP_EPS * h0, gap_reach2, gap_plane);
         continue;

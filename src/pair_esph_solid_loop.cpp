@@ -69,7 +69,6 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   // pair forces in force units (atom->f, the contact force); all else internal
   const double fconv = units.force;
   const int solid = (contact == CONTACT_SOLID);
-  const int touch = touch_on_run;
   // artificial stress: 1 / W(dp) at constant h
   double wdp_inv0 = 0.0;
   constexpr int AST = EXTRA & EXTRA_ASTRESS;
@@ -158,7 +157,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         const double mj = rmass[j];
         if (BND && mi == 0.0 && mj == 0.0) {
           // two boundary particles: the surface gap between different bodies
-          if (solid && bi != body[j] && (!touch || touch_on(bi, body[j])))
+          if (solid && bi != body[j])
             bnd_gap_pair(acc[i], (newton_pair || j < nlocal) ? acc[j] : nullptr, qi, hq[j], dx,
                          gap_eps, gap_reach2, gap_plane);
           continue;
