@@ -169,6 +169,14 @@ void PairESPHSolid::init_style()
   init_turn();
   init_recon();
   init_cone();
+  // contact/gap touch: only where two bodies can touch
+  touch_on_run = 0;
+  touch_bodies.clear();
+  if (contact == CONTACT_SOLID && gap_touch) {
+    int gmin, gmax, anybnd;
+    body_range(gmin, gmax, anybnd);
+    touch_on_run = anybnd && (gmin != gmax);
+  }
   // the reach of a surface-gap partner, in the boundary particles' spacing (the smoothing
   // length where no fix esph/boundary gives it)
   const double sb = boundary_spacing();
@@ -326,14 +334,6 @@ void PairESPHSolid::init_cone()
     body_range(gmin, gmax, anybnd);
     cone_on = anybnd && (gmin != gmax);
   }
-  // contact/gap touch: only where two bodies can touch
-  touch_on_run = 0;
-  if (contact == CONTACT_SOLID && gap_touch) {
-    int gmin, gmax, anybnd;
-    body_range(gmin, gmax, anybnd);
-    touch_on_run = anybnd && (gmin != gmax);
-  }
-  touch_bodies.clear();
 }
 
 /* ----------------------------------------------------------------------
@@ -635,10 +635,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
                nforward, comm_forward);
   const int touch = bnd && touch_on_run;
   if (bnd && !normals_valid) {
-    if (touch) {
-      simd_active = 0;
-      update_touch();
-    }
+    if (touch) update_touch(0);
     compute_normals();
   }
   // (before hoist(), which then also writes the slots only the vector pass reads)
@@ -662,7 +659,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
     simd_pack();
     simd_split(bnd);
   }
-  if (touch) update_touch();
+  if (touch) update_touch(simd_active);
   pair_pass(bnd);
 
   if (force->newton_pair) {

@@ -242,7 +242,7 @@ class PairESPHSolid : public Pair {
   void init_turn();
   void turn_with_bodies();
   void compute_normals();
-  void update_touch();
+  void update_touch(int);
   bool touch_body(int) const;
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);

@@ -22,6 +22,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
@@ -122,11 +123,11 @@ void PairESPHSolid::store_bnd_gap(int i)
    particles' cells meet, touch_pair()) or have an engaged real particle (by
    the engagements this computation starts from), gathered on every rank.
    Called before compute_normals() at the start of a run (the whole half
-   list) and before the pair pass (the split list where the vector pass
-   runs): the same positions, the same bodies
+   list) and before the pair pass (the split list of simd_split() where the
+   vector pass runs, split = 1): the same positions, the same bodies
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::update_touch()
+void PairESPHSolid::update_touch(int split)
 {
   double **x = atom->x;
   const double *rmass = state->rmass;
@@ -137,9 +138,8 @@ void PairESPHSolid::update_touch()
   touch_bodies.clear();
   for (int i = 0; i < atom->nlocal; i++)
     if (rmass[i] > 0.0 && state->eng[i] > 0.0) touch_bodies.push_back(body[i]);
-  // the pairs of the scalar loop (simd_split(): the cross-body pairs among them) where the
-  // vector pass runs, else the whole half list
-  const int split = simd_active && (int) simd_first.size() == list->inum + 1;
+  // the pairs of the scalar loop (the cross-body pairs among them) where the vector pass
+  // runs, else the whole half list
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (rmass[i] <= 0.0) continue;
@@ -156,23 +156,7 @@ void PairESPHSolid::update_touch()
       }
     }
   }
-  // every rank's bodies, sorted, without repeats
-  std::sort(touch_bodies.begin(), touch_bodies.end());
-  touch_bodies.erase(std::unique(touch_bodies.begin(), touch_bodies.end()), touch_bodies.end());
-  const int n = (int) touch_bodies.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<int> all(total);
-  MPI_Allgatherv(touch_bodies.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
-                 world);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  touch_bodies.swap(all);
+  touch_bodies = ESPHCheck::global_set(lmp, touch_bodies);
 }
 
 /* body b touches another body: its real particles take surface gaps */
