@@ -170,24 +170,103 @@ static constexpr double GAP_NONE = 1.0e30;
 static constexpr double GAP_REACH = 2.0;
 
 /* contact/gap touch (the default): the real particles of a body have no surface gap, and so
-   no interaction with another body, until the body touches one: two real particles of
-   different bodies whose cubes of side s (the spacing), aligned with the box, meet,
-   max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s; the body stays so while it has an
-   engaged real particle. From then on the projection decides, as from a touching start (its
-   boundary particles keep their gaps all along, so the gaps have their rates and history
-   when the touch comes). On a lattice aligned with the box this is where the faces, edges
-   and corners of the particles' cells meet, at any lattice offset. The cells are the box's:
-   of a body turned off the axes they meet earlier where faces meet (the projection then
-   decides; alone it couples edges and corners 0.26-0.32 spacings before the faces meet,
-   bench/gap_lead) and later where turned edges or corners meet head-on. A body that
-   touches one body couples by the projection with any other in reach. */
+   no interaction with another body, until the body touches one: the cells of two of their
+   real particles of different bodies meet; the body stays so while it has an engaged real
+   particle. From then on the projection decides, as from a touching start (its boundary
+   particles keep their gaps all along, so the gaps have their rates and history when the
+   touch comes). The cell of a particle is the cube of side s (the spacing) whose faces are
+   normal to its nearest neighbours (lattice_frame(): the lattice cell of a simple cubic
+   lattice in any orientation, turned and deformed with the body); two cells meet when no
+   axis separates them (touch_cells()). On a lattice body that is where the faces, edges
+   and corners of the bodies meet, at any lattice offset and orientation. A particle without
+   three nearly normal neighbours near one spacing away (another lattice, an irregular
+   distribution) has the cube aligned with the box. A body that touches one body couples by
+   the projection with any other in reach. */
 
 static constexpr double TOUCH_TOL = 0.02;
+// a cell's neighbours lie TOUCH_SHELL_LO..TOUCH_SHELL_HI spacings away; two of them span
+// different axes when |cos| < TOUCH_ORTHO, the third is normal to both when |cos| with
+// their cross product is above TOUCH_NORMAL
+static constexpr double TOUCH_SHELL_LO = 0.75, TOUCH_SHELL_HI = 1.25;
+static constexpr double TOUCH_ORTHO = 0.3, TOUCH_NORMAL = 0.9;
+// two cells can meet only while their centres are closer than this many spacings (the sum
+// of the cubes' half diagonals, with the tolerance)
+static constexpr double TOUCH_REACH = 1.7320508075688772 * (1.0 + TOUCH_TOL);
 
-inline bool touch_pair(const double *xij, double s)
+/* the frame of a particle's cell (three orthonormal rows f[0..2], f[3..5], f[6..8]) from
+   the vectors d[3k..3k+2], k < n, to its neighbours of the same body, in an order that does
+   not depend on the ranks: the first neighbour TOUCH_SHELL_LO..HI spacings away, the first
+   such one nearly normal to it, and one nearly normal to both (in 2d the third axis is z),
+   made orthonormal in that order. Returns false, and the box's axes, without them. */
+
+inline bool lattice_frame(const double *d, int n, double s, int dim, double *f)
 {
-  const double c = std::max(std::max(fabs(xij[0]), fabs(xij[1])), fabs(xij[2]));
-  return c <= (1.0 + TOUCH_TOL) * s;
+  const double lo2 = TOUCH_SHELL_LO * TOUCH_SHELL_LO * s * s;
+  const double hi2 = TOUCH_SHELL_HI * TOUCH_SHELL_HI * s * s;
+  int a = -1, b = -1, c = -1;
+  double e[9];
+  for (int k = 0; k < n; k++) {
+    const double *v = d + 3 * k;
+    const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    if (v2 < lo2 || v2 > hi2) continue;
+    const double vl = sqrt(v2);
+    if (a < 0) {
+      a = k;
+      for (int q = 0; q < 3; q++) e[q] = v[q] / vl;
+      continue;
+    }
+    const double ca = (v[0] * e[0] + v[1] * e[1] + v[2] * e[2]) / vl;
+    if (b < 0) {
+      if (fabs(ca) >= TOUCH_ORTHO) continue;
+      double u[3] = {v[0] - ca * vl * e[0], v[1] - ca * vl * e[1], v[2] - ca * vl * e[2]};
+      const double ul = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+      b = k;
+      for (int q = 0; q < 3; q++) e[3 + q] = u[q] / ul;
+      e[6] = e[1] * e[5] - e[2] * e[4];
+      e[7] = e[2] * e[3] - e[0] * e[5];
+      e[8] = e[0] * e[4] - e[1] * e[3];
+      if (dim == 2) break;
+      continue;
+    }
+    const double c3 = (v[0] * e[6] + v[1] * e[7] + v[2] * e[8]) / vl;
+    if (fabs(c3) > TOUCH_NORMAL) {
+      c = k;
+      break;
+    }
+  }
+  const bool ok = (a >= 0 && b >= 0 && (c >= 0 || dim == 2));
+  for (int q = 0; q < 9; q++) f[q] = ok ? e[q] : ((q % 4 == 0) ? 1.0 : 0.0);
+  return ok;
+}
+
+/* two cells meet: cubes of side (1 + TOUCH_TOL) s centred xij apart, with frames fi and fj
+   (lattice_frame()), are not separated along any of the 15 axes of the separating axis
+   theorem (the six face normals and the nine cross products of edges). With the box's
+   frames on both: max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s */
+
+inline bool touch_cells(const double *xij, const double *fi, const double *fj, double s)
+{
+  const double r = 0.5 * (1.0 + TOUCH_TOL) * s;
+  auto separates = [&](const double *l) {
+    double ri = 0.0, rj = 0.0;
+    for (int a = 0; a < 3; a++) {
+      ri += fabs(l[0] * fi[3 * a] + l[1] * fi[3 * a + 1] + l[2] * fi[3 * a + 2]);
+      rj += fabs(l[0] * fj[3 * a] + l[1] * fj[3 * a + 1] + l[2] * fj[3 * a + 2]);
+    }
+    return fabs(l[0] * xij[0] + l[1] * xij[1] + l[2] * xij[2]) > r * (ri + rj);
+  };
+  for (int a = 0; a < 3; a++)
+    if (separates(fi + 3 * a) || separates(fj + 3 * a)) return false;
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      const double *u = fi + 3 * a, *v = fj + 3 * b;
+      const double l[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                           u[0] * v[1] - u[1] * v[0]};
+      // (parallel edges: the face normals decide)
+      if (l[0] * l[0] + l[1] * l[1] + l[2] * l[2] < 1.0e-12) continue;
+      if (separates(l)) return false;
+    }
+  return true;
 }
 
 inline bool contact_bnd_gap(const double *na, const double *nb, const double *xab,

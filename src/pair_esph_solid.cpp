@@ -805,6 +805,11 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       for (int k = couple_k0; k < couple_k1; k++) buf[m++] = cpl[list[i]][k];
     return m;
   }
+  if (comm_stage == COMM_TOUCH) {
+    for (int i = 0; i < n; i++)
+      for (int k = 0; k < 9; k++) buf[m++] = touch_frame[9 * (size_t) list[i] + k];
+    return m;
+  }
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
     for (int k = Q_V; k < Q_A + 6; k++) buf[m++] = q[k];
@@ -861,6 +866,11 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       for (int k = couple_k0; k < couple_k1; k++) cpl[i][k] = buf[m++];
     return;
   }
+  if (comm_stage == COMM_TOUCH) {
+    for (int i = first; i < last; i++)
+      for (int k = 0; k < 9; k++) touch_frame[9 * (size_t) i + k] = buf[m++];
+    return;
+  }
   for (int i = first; i < last; i++) {
     double *q = hq[i];
     for (int k = Q_V; k < Q_A + 6; k++) q[k] = buf[m++];
@@ -898,6 +908,10 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     }
     return m;
   }
+  if (comm_stage == COMM_TOUCH) {
+    for (int i = first; i < last; i++) buf[m++] = touch_mark[i];
+    return m;
+  }
   if (comm_stage == COMM_COUPLE) {
     // (the rows of atoms without a couple hold nothing)
     for (int i = first; i < last; i++)
@@ -932,6 +946,10 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
       atom_contact[list[i]][0] += buf[m++];
       atom_contact[list[i]][1] += buf[m++];
     }
+    return;
+  }
+  if (comm_stage == COMM_TOUCH) {
+    for (int i = 0; i < n; i++) touch_mark[list[i]] += buf[m++];
     return;
   }
   if (comm_stage == COMM_COUPLE) {
@@ -972,6 +990,7 @@ double PairESPHSolid::memory_usage()
   if (cpl) bytes += (double) nmax * 10 * sizeof(double) + (double) cflag.capacity();
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
+  bytes += (double) (touch_mark.capacity() + touch_frame.capacity()) * sizeof(double);
   // the vector pass: the scalar loop's split list (the full list is counted by the
   // neighbor lists; its rows are hq's)
   bytes += (double) (simd_first.capacity() + simd_j.capacity() + simd_nbulk.capacity() +

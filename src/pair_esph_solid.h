@@ -116,6 +116,8 @@ class PairESPHSolid : public Pair {
   int gap_touch, touch_on_run;
   // the bodies that touch another body or have an engaged real particle, on every rank
   std::vector<int> touch_bodies;
+  // ... per atom: marked for a look at its cell, and its cell's frame (touch_frames())
+  std::vector<double> touch_mark, touch_frame;
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
   double **cpl;
@@ -243,6 +245,7 @@ class PairESPHSolid : public Pair {
   void turn_with_bodies();
   void compute_normals();
   void update_touch(int);
+  void touch_frames(double);
   bool touch_body(int) const;
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);

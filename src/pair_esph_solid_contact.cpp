@@ -21,9 +21,11 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "esph_check.h"
 #include "esph_contact.h"
+#include "esph_grid.h"
 #include "esph_kernel.h"
 #include "esph_state.h"
 #include "force.h"
@@ -119,12 +121,15 @@ void PairESPHSolid::store_bnd_gap(int i)
 }
 
 /* ----------------------------------------------------------------------
-   contact/gap touch: the bodies that touch another body now (two real
-   particles' cells meet, touch_pair()) or have an engaged real particle (by
-   the engagements this computation starts from), gathered on every rank.
-   Called before compute_normals() at the start of a run (the whole half
-   list) and before the pair pass (the split list of simd_split() where the
-   vector pass runs, split = 1): the same positions, the same bodies
+   contact/gap touch: the bodies that touch another body now (the cells of
+   two of their real particles meet, touch_cells()) or have an engaged real
+   particle (by the engagements this computation starts from), gathered on
+   every rank. Called before compute_normals() at the start of a run (the
+   whole half list) and before the pair pass (the split list of simd_split()
+   where the vector pass runs, split = 1): the same positions, the same
+   bodies. The cells are looked at only where two real particles of bodies
+   that do not both touch already are close enough for their cells to meet
+   (touch_frames()): in flight and in contact nothing is done but the scan
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::update_touch(int split)
@@ -132,31 +137,114 @@ void PairESPHSolid::update_touch(int split)
   double **x = atom->x;
   const double *rmass = state->rmass;
   const int *body = state->body;
+  const int nall = atom->nlocal + atom->nghost;
   const double sb = boundary_spacing();
   const double s = (sb > 0.0) ? sb : h0;
+  const double reach2 = TOUCH_REACH * TOUCH_REACH * s * s;
 
-  touch_bodies.clear();
+  std::vector<int> engaged;
   for (int i = 0; i < atom->nlocal; i++)
-    if (rmass[i] > 0.0 && state->eng[i] > 0.0) touch_bodies.push_back(body[i]);
-  // the pairs of the scalar loop (the cross-body pairs among them) where the vector pass
-  // runs, else the whole half list
+    if (rmass[i] > 0.0 && state->eng[i] > 0.0) engaged.push_back(body[i]);
+  engaged = ESPHCheck::global_set(lmp, engaged);
+  auto is_engaged = [&](int b) {
+    return std::binary_search(engaged.begin(), engaged.end(), b);
+  };
+
+  // the candidates: the pairs of the scalar loop (the cross-body pairs among them) where
+  // the vector pass runs, else the whole half list
+  std::vector<int> cand;
+  touch_mark.assign(nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (rmass[i] <= 0.0) continue;
     const int bi = body[i];
+    const int ei = is_engaged(bi);
     const int *jlist = split ? simd_j.data() + simd_first[ii] : list->firstneigh[i];
     const int jnum = split ? simd_first[ii + 1] - simd_first[ii] : list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      if (body[j] == bi || rmass[j] <= 0.0) continue;
+      if (body[j] == bi || rmass[j] <= 0.0 || (ei && is_engaged(body[j]))) continue;
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (touch_pair(xij, s)) {
-        touch_bodies.push_back(bi);
-        touch_bodies.push_back(body[j]);
+      if (xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2] > reach2) continue;
+      cand.push_back(i);
+      cand.push_back(j);
+      touch_mark[i] = touch_mark[j] = 1.0;
+    }
+  }
+  int any = !cand.empty(), any_all = 0;
+  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
+  if (any_all) {
+    touch_frames(s);
+    for (size_t k = 0; k < cand.size(); k += 2) {
+      const int i = cand[k], j = cand[k + 1];
+      const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      if (touch_cells(xij, &touch_frame[9 * i], &touch_frame[9 * j], s)) {
+        engaged.push_back(body[i]);
+        engaged.push_back(body[j]);
       }
     }
   }
-  touch_bodies = ESPHCheck::global_set(lmp, touch_bodies);
+  touch_bodies = ESPHCheck::global_set(lmp, engaged);
+}
+
+/* ----------------------------------------------------------------------
+   the frames of the cells (lattice_frame()) of the real particles marked in
+   touch_mark (on any rank), from their neighbours of the same body; the
+   others keep the box's axes. A grid of the real particles, owned and
+   ghosts, gives the neighbours in an order that does not depend on the ranks
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::touch_frames(double s)
+{
+  double **x = atom->x;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int dim = domain->dimension;
+
+  if (force->newton_pair) {
+    comm_stage = COMM_TOUCH;
+    comm->reverse_comm(this, 1);
+  }
+  touch_frame.assign(9 * (size_t) nall, 0.0);
+  for (int i = 0; i < nall; i++)
+    for (int a = 0; a < 3; a++) touch_frame[9 * i + 4 * a] = 1.0;
+
+  std::vector<int> real;
+  for (int i = 0; i < nall; i++)
+    if (rmass[i] > 0.0) real.push_back(i);
+  const double size = TOUCH_SHELL_HI * s;
+  CellGrid grid(domain->boxlo, size);
+  grid.build((int) real.size(),
+             [&](int k) {
+               return x[real[k]];
+             },
+             [&](int k) {
+               return tag[real[k]];
+             });
+  std::vector<double> d;
+  for (int i = 0; i < nlocal; i++) {
+    if (touch_mark[i] == 0.0 || rmass[i] <= 0.0) continue;
+    long long c[3];
+    grid.cell_of(x[i], c);
+    d.clear();
+    for (int a = -1; a <= 1; a++)
+      for (int b = -1; b <= 1; b++)
+        for (int cc = -1; cc <= 1; cc++) {
+          const std::vector<int> *cell = grid.at(c, a, b, cc);
+          if (!cell) continue;
+          for (int k : *cell) {
+            const int j = real[k];
+            if (j == i || body[j] != body[i]) continue;
+            for (int q = 0; q < 3; q++) d.push_back(x[j][q] - x[i][q]);
+          }
+        }
+    lattice_frame(d.data(), (int) d.size() / 3, s, dim, &touch_frame[9 * (size_t) i]);
+  }
+  comm_stage = COMM_TOUCH;
+  comm->forward_comm(this, 9);
 }
 
 /* body b touches another body: its real particles take surface gaps */

@@ -117,7 +117,16 @@ static constexpr int Q_RFLAG = 38;    // 1 if R != 0
 // with the gradient correction bonet/lok: B_i (9, row major) in the last columns, from qcol_b;
 // with contact/normal cone the cone C_i (Voigt, 6) after it, from qcol_n
 
-enum { COMM_HOIST, COMM_ACC, COMM_NORMALS, COMM_GAPS, COMM_ATOM_CONTACT, COMM_CORR, COMM_COUPLE };
+enum {
+  COMM_HOIST,
+  COMM_ACC,
+  COMM_NORMALS,
+  COMM_GAPS,
+  COMM_ATOM_CONTACT,
+  COMM_CORR,
+  COMM_COUPLE,
+  COMM_TOUCH
+};
 
 static constexpr double BIG_DT = 1.0e300;
 

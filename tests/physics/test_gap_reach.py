@@ -11,7 +11,10 @@ other from step 0 across the open gap: 13 / 40 / 14 N and 221 / 2099 / 112 inter
 pairs at step 0, first touch at t = 0. The default contact/gap touch couples the bodies
 when their particles' cells meet (the faces 0.02 spacings apart), whatever h; the
 projection alone couples the corners 0.26 spacings before the faces meet, contact/gap
-plane 0.066. On 1 and 2 ranks. About 30 seconds."""
+plane 0.066. The cells are the particles' lattice cells, turned with the body: the scene
+turned as a whole touches when the aligned one does (before 2026-12-06 the cells were the
+box's: turned 45 degrees about z the corners coupled 0.26 spacings early, as under the
+projection alone). On 1 and 2 ranks. About 40 seconds."""
 
 import esphtest as et
 
@@ -58,6 +61,30 @@ c.true("hvar 1.5: 2 ranks touch at the step of 1", two["t_first_us"] == hv["t_fi
        "the same touch and gap partners on every rank")
 c.less(f"hvar 1.5: contact force after {NSTEPS} steps, 2 ranks against 1, relative",
        abs(two["force"] / hv["force"] - 1.0), 1e-10, "round-off")
+
+# the scene turned as a whole (about z by 45 degrees, about (1, 2, 3) by 30), from 0.33
+# spacings (0.32 puts the aligned touch exactly at the tolerance, where round-off picks the
+# step): the same first touch and force as the aligned scene
+T33 = 0.33 * 2.5e-4 / 60.0 * 1e6
+al = case("aligned_0.33", gap=0.33, nsteps=NSTEPS)
+for ang, ax in ((45.0, (0, 0, 1)), (30.0, (1, 2, 3))):
+    tv = dict(gap=0.33, nsteps=NSTEPS, rot_angle=ang, rot_ax=ax[0], rot_ay=ax[1], rot_az=ax[2])
+    t = case(f"turned{ang:.0f}", **tv)
+    c.less(f"turned {ang:.0f} degrees about {ax}: gap at the first touch [spacings]",
+           abs(T33 - t["t_first_us"]) / SPACING_US, 0.03,
+           "the cells turn with the bodies (measured 0.008, as aligned; with the box's cells "
+           "0.26 about z)")
+    c.true(f"turned {ang:.0f} degrees about {ax}: first touch at the aligned scene's step",
+           t["t_first_us"] == al["t_first_us"], f"aligned: {al['t_first_us']} us")
+    c.less(f"turned {ang:.0f} degrees about {ax}: contact force after {NSTEPS} steps against "
+           "the aligned scene, relative", abs(t["force"] / al["force"] - 1.0), 1e-5,
+           "frame invariance (the summary prints six digits; measured equal)")
+t2 = case("turned30_np2", np=2, gap=0.33, nsteps=NSTEPS, rot_angle=30.0, rot_ax=1, rot_ay=2,
+          rot_az=3)
+c.true("turned 30 degrees: 2 ranks touch at the step of 1", t2["t_first_us"] == t["t_first_us"],
+       "the cells' frames from the same neighbours on every rank")
+c.less(f"turned 30 degrees: contact force after {NSTEPS} steps, 2 ranks against 1, relative",
+       abs(t2["force"] / t["force"] - 1.0), 1e-10, "round-off")
 
 # contact/gap projection (the rule under the touch): the small block's bottom corners read
 # -0.34 spacings with the faces 0.32 apart, and the blocks touch at 0.26 us (the faces 0.26

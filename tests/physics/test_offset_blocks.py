@@ -73,8 +73,8 @@ for np_ in (2, 4):
            "the touching pairs of bodies gathered on every rank")
     c.less(f"np {np_}: momentum across against np 1, relative",
            abs(s["p1y_rel"] / g["p1y_rel"] - 1.0), 1e-9, "round-off (printed to 7 digits)")
-# a cube turned corner first (tests/physics/in.corner_face): the touch is decided by the box's
-# cells, which the turned cube's are not; its corner must still couple when it meets the face
+# a cube turned corner first (tests/physics/in.corner_face): the touch is decided by the
+# particles' cells, turned with the cube; its corner couples when it meets the face
 CF = et.source_input(a, "in.corner_face")
 cf = {}
 for name, extra in (("touch", ""), ("projection", "contact/gap projection")):
@@ -86,7 +86,7 @@ c.less("turned corner on a face: first touch within 0.03 spacings of the meeting
        f"the corner meets the face at {T_MEET:.2f} us (measured 3.977 us, 0.006 spacings)")
 c.less("turned corner on a face: first touch not after the projection's [us]",
        cf["touch"]["t_first"] - cf["projection"]["t_first"], 1e-9,
-       "the box's cells meet no later here (measured the same step)")
+       "the turned cells meet with the corner (measured the same step)")
 c.true("turned corner on a face: one contact episode", cf["touch"]["episodes"] == 1,
        "hit and rebound")
 c.less("turned corner on a face: energy drift, relative", abs(cf["touch"]["edrift"]), 1e-3,

@@ -476,12 +476,14 @@ TEST(Contact, RotateBySpin)
 // side s aligned with the box) meet: face to face at any sideways offset, along an edge and
 // at a corner; a gap of more than TOUCH_TOL spacings in any one axis keeps them apart, in
 // either direction and at any scale
-TEST(Contact, TouchPair)
+TEST(Contact, TouchCells)
 {
+  const double box[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
   for (double s : {1.0, 2.5e-4}) {
-    auto touch = [s](double x, double y, double z) {
+    // the box's cells: max(|x|, |y|, |z|) <= (1 + TOUCH_TOL) s
+    auto touch = [s, &box](double x, double y, double z) {
       const double xij[3] = {x * s, y * s, z * s};
-      return touch_pair(xij, s);
+      return touch_cells(xij, box, box, s);
     };
     EXPECT_TRUE(touch(1.0, 0.0, 0.0));
     EXPECT_TRUE(touch(-1.0, 0.0, 0.0));
@@ -494,7 +496,121 @@ TEST(Contact, TouchPair)
     EXPECT_FALSE(touch(0.0, -1.0 - 1.01 * TOUCH_TOL, 0.0));
     EXPECT_FALSE(touch(0.2, 0.1, 1.0 + 1.01 * TOUCH_TOL));
     EXPECT_FALSE(touch(1.1, 1.1, 0.0));    // diagonal, 0.1 apart in both axes
+
+    // two cells turned 45 degrees about z, edges head-on along x: they meet sqrt(2) s apart,
+    // at any offset along the edges (z)
+    const double c = sqrt(0.5);
+    const double r45[9] = {c, c, 0.0, -c, c, 0.0, 0.0, 0.0, 1.0};
+    for (double z : {0.0, 0.7}) {
+      const double in[3] = {sqrt(2.0) * (1.0 + 0.99 * TOUCH_TOL) * s, 0.0, z * s};
+      const double out[3] = {sqrt(2.0) * (1.0 + 1.01 * TOUCH_TOL) * s, 0.0, z * s};
+      EXPECT_TRUE(touch_cells(in, r45, r45, s));
+      EXPECT_FALSE(touch_cells(out, r45, r45, s));
+    }
+    // (the box's cells would meet only 1 + TOUCH_TOL spacings apart)
+    const double edge[3] = {1.2 * s, 0.0, 0.0};
+    EXPECT_FALSE(touch(1.2, 0.0, 0.0));
+    EXPECT_TRUE(touch_cells(edge, r45, r45, s));
+    // a turned edge on an aligned face: the edge lies sqrt(1/2) s below its particle, the
+    // face s / 2 above its own, at any offset of the face's particle across the edge
+    // (within the face) and along it
+    const double rx[9] = {1.0, 0.0, 0.0, 0.0, c, c, 0.0, -c, c};    // turned about x
+    for (double y : {0.0, 0.4})
+      for (double xa : {0.0, 0.3}) {
+        const double in[3] = {xa * s, y * s, (0.5 + c) * s * (1.0 + 0.99 * TOUCH_TOL)};
+        const double out[3] = {xa * s, y * s, (0.5 + c) * s * (1.0 + 1.01 * TOUCH_TOL)};
+        EXPECT_TRUE(touch_cells(in, rx, box, s));
+        EXPECT_FALSE(touch_cells(out, rx, box, s));
+      }
+    // a corner first on an aligned face: the body diagonal along z, the corner sqrt(3) / 2 s
+    // below its particle. Axes e_a = z / sqrt(3) + sqrt(2/3) (cos phi_a u + sin phi_a w),
+    // phi_a = 0, 120, 240 degrees, u and w normal to z
+    const double u[3] = {sqrt(0.5), -sqrt(0.5), 0.0};
+    const double w[3] = {1.0 / sqrt(6.0), 1.0 / sqrt(6.0), -2.0 / sqrt(6.0)};
+    double corner[9];
+    for (int a = 0; a < 3; a++) {
+      const double phi = a * 2.0 * atan(1.0) * 4.0 / 3.0;
+      for (int q = 0; q < 3; q++)
+        corner[3 * a + q] = ((q == 2) ? 1.0 / sqrt(3.0) : 0.0) +
+            sqrt(2.0 / 3.0) * (cos(phi) * u[q] + sin(phi) * w[q]);
+    }
+    const double zc = 0.5 + 0.5 * sqrt(3.0);
+    const double cin[3] = {0.0, 0.0, zc * s * (1.0 + 0.99 * TOUCH_TOL)};
+    const double cout[3] = {0.0, 0.0, zc * s * (1.0 + 1.01 * TOUCH_TOL)};
+    EXPECT_TRUE(touch_cells(cin, corner, box, s));
+    EXPECT_FALSE(touch_cells(cout, corner, box, s));
   }
+}
+
+// The frame of a cell from the neighbours: a simple cubic lattice turned anyhow gives its
+// axes (up to sign and order) for an inner particle, a face, an edge and a corner; in 2d a
+// square lattice; neighbours of an fcc lattice, a line of particles and none give the box.
+TEST(Contact, LatticeFrame)
+{
+  const double s = 2.0e-4;
+  // a rotation about the axis (1, 2, 3) by 0.7 rad (Rodrigues)
+  double k[3] = {1.0, 2.0, 3.0};
+  const double kl = sqrt(14.0);
+  for (double &v : k) v /= kl;
+  const double th = 0.7, ct = cos(th), st = sin(th);
+  double R[3][3];
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      const double K = (a == b) ? 0.0 : ((a + 1) % 3 == b ? -k[3 - a - b] : k[3 - a - b]);
+      R[a][b] = ((a == b) ? ct : 0.0) + st * K + (1.0 - ct) * k[a] * k[b];
+    }
+  auto turned = [&](double x, double y, double z, std::vector<double> &d) {
+    for (int a = 0; a < 3; a++) d.push_back(s * (R[a][0] * x + R[a][1] * y + R[a][2] * z));
+  };
+  // each row of the frame is parallel to a column of R
+  auto check = [&](const std::vector<double> &d) {
+    double f[9];
+    ASSERT_TRUE(lattice_frame(d.data(), d.size() / 3, s, 3, f));
+    for (int a = 0; a < 3; a++) {
+      double best = 0.0;
+      for (int b = 0; b < 3; b++)
+        best = std::max(best,
+                        fabs(f[3 * a] * R[0][b] + f[3 * a + 1] * R[1][b] + f[3 * a + 2] * R[2][b]));
+      EXPECT_NEAR(best, 1.0, 1e-12);
+    }
+  };
+  std::vector<double> inner, corner, far;
+  for (int a = -1; a <= 1; a++)
+    for (int b = -1; b <= 1; b++)
+      for (int c = -1; c <= 1; c++)
+        if (a || b || c) turned(a, b, c, inner);    // with the diagonals
+  check(inner);
+  turned(-1, 0, 0, corner);
+  turned(0, -1, -1, corner);    // a face diagonal between
+  turned(0, -1, 0, corner);
+  turned(0, 0, -1, corner);
+  check(corner);
+  // fcc: the twelve nearest neighbours at one spacing, along the face diagonals
+  std::vector<double> fcc;
+  const double q = sqrt(0.5);
+  for (int a = 0; a < 3; a++)
+    for (int sa : {-1, 1})
+      for (int sb : {-1, 1}) {
+        double v[3] = {0.0, 0.0, 0.0};
+        v[a] = sa * q * s;
+        v[(a + 1) % 3] = sb * q * s;
+        fcc.insert(fcc.end(), v, v + 3);
+      }
+  double f[9];
+  EXPECT_FALSE(lattice_frame(fcc.data(), fcc.size() / 3, s, 3, f));
+  for (int a = 0; a < 9; a++) EXPECT_EQ(f[a], (a % 4 == 0) ? 1.0 : 0.0);
+  turned(1, 0, 0, far);
+  turned(-1, 0, 0, far);
+  turned(2, 0, 0, far);
+  EXPECT_FALSE(lattice_frame(far.data(), far.size() / 3, s, 3, f));
+  EXPECT_FALSE(lattice_frame(nullptr, 0, s, 3, f));
+  // 2d: a square lattice turned by 0.3 rad about z
+  const double c2 = cos(0.3), s2 = sin(0.3);
+  const double sq[9] = {c2 * s, s2 * s, 0.0, -s2 * s, c2 * s, 0.0, -c2 * s, -s2 * s, 0.0};
+  ASSERT_TRUE(lattice_frame(sq, 3, s, 2, f));
+  EXPECT_NEAR(fabs(f[0] * c2 + f[1] * s2), 1.0, 1e-12);
+  EXPECT_NEAR(fabs(f[3] * -s2 + f[4] * c2), 1.0, 1e-12);
+  EXPECT_NEAR(fabs(f[8]), 1.0, 1e-12);
 }
 
 // The rigid spin of a body (fix esph/boundary turn body): a cloud of particles of unequal
