@@ -53,6 +53,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace ESPH {
 
@@ -194,33 +196,43 @@ static constexpr double TOUCH_ORTHO = 0.3, TOUCH_NORMAL = 0.9;
 static constexpr double TOUCH_REACH = 1.7320508075688772 * (1.0 + TOUCH_TOL);
 
 /* the frame of a particle's cell (three orthonormal rows f[0..2], f[3..5], f[6..8]) from
-   the vectors d[3k..3k+2], k < n, to its neighbours of the same body, in an order that does
-   not depend on the ranks: the first neighbour TOUCH_SHELL_LO..HI spacings away, the first
-   such one nearly normal to it, and one nearly normal to both (in 2d the third axis is z),
-   made orthonormal in that order. Returns false, and the box's axes, without them. */
+   the vectors d[3k..3k+2], k < n, to its neighbours of the same body, given in an order that
+   does not depend on the ranks: of the neighbours TOUCH_SHELL_LO..HI spacings away, shortest
+   first (ties in the given order), the first, the first nearly normal to it, and one nearly
+   normal to both (in 2d the third axis is z), made orthonormal in that order. Shortest
+   first keeps a compressed lattice's face diagonals out. Returns false, and the box's axes,
+   without three such neighbours. */
 
 inline bool lattice_frame(const double *d, int n, double s, int dim, double *f)
 {
   const double lo2 = TOUCH_SHELL_LO * TOUCH_SHELL_LO * s * s;
   const double hi2 = TOUCH_SHELL_HI * TOUCH_SHELL_HI * s * s;
-  int a = -1, b = -1, c = -1;
-  double e[9];
+  std::vector<std::pair<double, int>> shell;
   for (int k = 0; k < n; k++) {
     const double *v = d + 3 * k;
     const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-    if (v2 < lo2 || v2 > hi2) continue;
-    const double vl = sqrt(v2);
+    if (v2 >= lo2 && v2 <= hi2) shell.emplace_back(v2, k);
+  }
+  std::stable_sort(shell.begin(), shell.end(),
+                   [](const std::pair<double, int> &p, const std::pair<double, int> &q) {
+                     return p.first < q.first;
+                   });
+  int a = -1, b = -1, c = -1;
+  double e[9];
+  for (const auto &sk : shell) {
+    const double *v = d + 3 * sk.second;
+    const double vl = sqrt(sk.first);
     if (a < 0) {
-      a = k;
+      a = sk.second;
       for (int q = 0; q < 3; q++) e[q] = v[q] / vl;
       continue;
     }
     const double ca = (v[0] * e[0] + v[1] * e[1] + v[2] * e[2]) / vl;
     if (b < 0) {
       if (fabs(ca) >= TOUCH_ORTHO) continue;
-      double u[3] = {v[0] - ca * vl * e[0], v[1] - ca * vl * e[1], v[2] - ca * vl * e[2]};
+      const double u[3] = {v[0] - ca * vl * e[0], v[1] - ca * vl * e[1], v[2] - ca * vl * e[2]};
       const double ul = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-      b = k;
+      b = sk.second;
       for (int q = 0; q < 3; q++) e[3 + q] = u[q] / ul;
       e[6] = e[1] * e[5] - e[2] * e[4];
       e[7] = e[2] * e[3] - e[0] * e[5];
@@ -230,7 +242,7 @@ inline bool lattice_frame(const double *d, int n, double s, int dim, double *f)
     }
     const double c3 = (v[0] * e[6] + v[1] * e[7] + v[2] * e[8]) / vl;
     if (fabs(c3) > TOUCH_NORMAL) {
-      c = k;
+      c = sk.second;
       break;
     }
   }

@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <unordered_set>
 
 using namespace LAMMPS_NS;
 using namespace ESPH;
@@ -153,7 +154,6 @@ void PairESPHSolid::update_touch(int split)
   // the candidates: the pairs of the scalar loop (the cross-body pairs among them) where
   // the vector pass runs, else the whole half list
   std::vector<int> cand;
-  touch_mark.assign(nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (rmass[i] <= 0.0) continue;
@@ -168,12 +168,13 @@ void PairESPHSolid::update_touch(int split)
       if (xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2] > reach2) continue;
       cand.push_back(i);
       cand.push_back(j);
-      touch_mark[i] = touch_mark[j] = 1.0;
     }
   }
   int any = !cand.empty(), any_all = 0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   if (any_all) {
+    touch_mark.assign(nall, 0.0);
+    for (int i : cand) touch_mark[i] = 1.0;
     touch_frames(s);
     for (size_t k = 0; k < cand.size(); k += 2) {
       const int i = cand[k], j = cand[k + 1];
@@ -212,11 +213,28 @@ void PairESPHSolid::touch_frames(double s)
   for (int i = 0; i < nall; i++)
     for (int a = 0; a < 3; a++) touch_frame[9 * i + 4 * a] = 1.0;
 
-  std::vector<int> real;
-  for (int i = 0; i < nall; i++)
-    if (rmass[i] > 0.0) real.push_back(i);
+  // the real particles in the grid cells around the marked ones
   const double size = TOUCH_SHELL_HI * s;
   CellGrid grid(domain->boxlo, size);
+  std::unordered_set<long long> around;
+  for (int i = 0; i < nlocal; i++) {
+    if (touch_mark[i] == 0.0 || rmass[i] <= 0.0) continue;
+    long long c[3];
+    grid.cell_of(x[i], c);
+    for (int a = -1; a <= 1; a++)
+      for (int b = -1; b <= 1; b++)
+        for (int cc = -1; cc <= 1; cc++) {
+          const long long cm[3] = {c[0] + a, c[1] + b, c[2] + cc};
+          around.insert(CellGrid::key_of(cm));
+        }
+  }
+  std::vector<int> real;
+  for (int i = 0; i < nall; i++) {
+    if (rmass[i] <= 0.0) continue;
+    long long c[3];
+    grid.cell_of(x[i], c);
+    if (around.count(CellGrid::key_of(c))) real.push_back(i);
+  }
   grid.build((int) real.size(),
              [&](int k) {
                return x[real[k]];

@@ -585,6 +585,15 @@ TEST(Contact, LatticeFrame)
   turned(0, -1, 0, corner);
   turned(0, 0, -1, corner);
   check(corner);
+  // a lattice compressed by 15 % along its first axis and 10 % along the others: two face
+  // diagonals come within the shell (1.24 spacings; in the given order a diagonal is the
+  // first neighbour there), the axes, shorter, are taken first
+  std::vector<double> squeezed;
+  for (int a = -1; a <= 1; a++)
+    for (int b = -1; b <= 1; b++)
+      for (int c = -1; c <= 1; c++)
+        if (a || b || c) turned(0.85 * a, 0.9 * b, 0.9 * c, squeezed);
+  check(squeezed);
   // fcc: the twelve nearest neighbours at one spacing, along the face diagonals
   std::vector<double> fcc;
   const double q = sqrt(0.5);
