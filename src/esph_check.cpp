@@ -59,7 +59,8 @@ void ESPHCheck::first_error(LAMMPS *lmp, tagint tag, const std::string &msg)
 
 /* ---------------------------------------------------------------------- */
 
-std::vector<int> ESPHCheck::global_set(LAMMPS *lmp, std::vector<int> v)
+template <typename T>
+static std::vector<T> union_all(LAMMPS *lmp, std::vector<T> v, MPI_Datatype type)
 {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -72,12 +73,21 @@ std::vector<int> ESPHCheck::global_set(LAMMPS *lmp, std::vector<int> v)
     displs[p] = total;
     total += counts[p];
   }
-  std::vector<int> all(total);
-  MPI_Allgatherv(v.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
-                 lmp->world);
+  std::vector<T> all(total);
+  MPI_Allgatherv(v.data(), n, type, all.data(), counts.data(), displs.data(), type, lmp->world);
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   return all;
+}
+
+std::vector<int> ESPHCheck::global_set(LAMMPS *lmp, std::vector<int> v)
+{
+  return union_all(lmp, std::move(v), MPI_INT);
+}
+
+std::vector<long long> ESPHCheck::global_set(LAMMPS *lmp, std::vector<long long> v)
+{
+  return union_all(lmp, std::move(v), MPI_LONG_LONG);
 }
 
 /* ---------------------------------------------------------------------- */

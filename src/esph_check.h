@@ -49,6 +49,7 @@ namespace ESPHCheck {
 
   // union over all ranks of the values in v (sorted, unique)
   std::vector<int> global_set(LAMMPS *lmp, std::vector<int> v);
+  std::vector<long long> global_set(LAMMPS *lmp, std::vector<long long> v);
 
   // number of real (mass > 0) particles per body among the atoms in groupbit, all ranks
   std::map<int, bigint> body_counts(LAMMPS *lmp, ESPHState *state, int groupbit);

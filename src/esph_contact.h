@@ -171,10 +171,11 @@ static constexpr double GAP_NONE = 1.0e30;
 
 static constexpr double GAP_REACH = 2.0;
 
-/* contact/gap touch (the default): the real particles of a body have no surface gap, and so
-   no interaction with another body, until the body touches one: the cells of two of their
-   real particles of different bodies meet; the body stays so while it has an engaged real
-   particle. From then on the projection decides, as from a touching start (its boundary
+/* contact/gap touch (the default): two bodies interact only while they touch: the cells of
+   two of their real particles meet, or two of their real particles within the kernel's
+   reach are both engaged; and the real particles of a body have no surface gap until it
+   touches another or has an engaged real particle. Where two bodies touch the projection
+   decides, as from a touching start (their boundary
    particles keep their gaps all along, so the gaps have their rates and history when the
    touch comes). The cell of a particle is the cube of side s (the spacing) whose faces are
    normal to its nearest neighbours (lattice_frame(): the lattice cell of a simple cubic
@@ -182,8 +183,7 @@ static constexpr double GAP_REACH = 2.0;
    axis separates them (touch_cells()). On a lattice body that is where the faces, edges
    and corners of the bodies meet, at any lattice offset and orientation. A particle without
    three nearly normal neighbours near one spacing away (another lattice, an irregular
-   distribution) has the cube aligned with the box. A body that touches one body couples by
-   the projection with any other in reach. */
+   distribution) has the cube aligned with the box. */
 
 static constexpr double TOUCH_TOL = 0.02;
 // a cell's neighbours lie TOUCH_SHELL_LO..TOUCH_SHELL_HI spacings away; two of them span

@@ -172,6 +172,7 @@ void PairESPHSolid::init_style()
   // contact/gap touch: only where two bodies can touch
   touch_on_run = 0;
   touch_bodies.clear();
+  touch_pairs.clear();
   if (contact == CONTACT_SOLID && gap_touch) {
     int gmin, gmax, anybnd;
     body_range(gmin, gmax, anybnd);
@@ -634,10 +635,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
                "Pair esph/solid: internal error, {} values per atom to communicate, {} sized",
                nforward, comm_forward);
   const int touch = bnd && touch_on_run;
-  if (bnd && !normals_valid) {
-    if (touch) update_touch(0);
-    compute_normals();
-  }
+  if (bnd && !normals_valid) { compute_normals(touch); }
   // (before hoist(), which then also writes the slots only the vector pass reads)
   simd_active = simd_ready();
   hoist();
@@ -651,6 +649,9 @@ void PairESPHSolid::compute(int eflag, int vflag)
     for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
   });
 
+  // (the correction weighs cross-body pairs as the pair pass does: the same touch)
+  const int touch_first = touch && correct_flag >= CORRECT_BONETLOK;
+  if (touch_first) update_touch(0);
   if (correct_flag >= CORRECT_BONETLOK) correction();
   if (astress_flag) artificial_stress();
 
@@ -659,7 +660,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
     simd_pack();
     simd_split(bnd);
   }
-  if (touch) update_touch(simd_active);
+  if (touch && !touch_first) update_touch(simd_active);
   pair_pass(bnd);
 
   if (force->newton_pair) {
@@ -782,6 +783,7 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       for (int k = 0; k < 3; k++) buf[m++] = q[Q_N + k];
       buf[m++] = q[Q_H];
       for (int k = 0; k < 3; k++) buf[m++] = q[Q_V + k];
+      buf[m++] = q[Q_ENG];
     }
     return m;
   }
@@ -844,6 +846,7 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       for (int k = 0; k < 3; k++) q[Q_N + k] = buf[m++];
       q[Q_H] = buf[m++];
       for (int k = 0; k < 3; k++) q[Q_V + k] = buf[m++];
+      q[Q_ENG] = buf[m++];
     }
     return;
   }

@@ -27,6 +27,7 @@ PairStyle(esph/solid,PairESPHSolid);
 
 #include <array>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -114,8 +115,10 @@ class PairESPHSolid : public Pair {
   // contact/gap: touch (update_touch()) on the projection, else the projection alone; the
   // touch in use where contact solid meets two bodies or more (init_style())
   int gap_touch, touch_on_run;
-  // the bodies that touch another body or have an engaged real particle, on every rank
+  // the bodies that touch another body or have an engaged real particle, and the pairs of
+  // bodies that touch (touch_key()), on every rank
   std::vector<int> touch_bodies;
+  std::vector<long long> touch_pairs;
   // ... per atom: marked for a look at its cell, and its cell's frame (touch_frames())
   std::vector<double> touch_mark, touch_frame;
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
@@ -243,10 +246,16 @@ class PairESPHSolid : public Pair {
   void finalize(int eflag);
   void init_turn();
   void turn_with_bodies();
-  void compute_normals();
+  void compute_normals(int);
   void update_touch(int);
   void touch_frames(double);
   bool touch_body(int) const;
+  bool touch_pair_on(int, int) const;
+  static long long touch_key(int a, int b)
+  {
+    if (a > b) std::swap(a, b);
+    return (long long) (((unsigned long long) (unsigned) a << 32) | (unsigned) b);
+  }
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;

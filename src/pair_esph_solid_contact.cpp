@@ -122,15 +122,19 @@ void PairESPHSolid::store_bnd_gap(int i)
 }
 
 /* ----------------------------------------------------------------------
-   contact/gap touch: the bodies that touch another body now (the cells of
-   two of their real particles meet, touch_cells()) or have an engaged real
-   particle (by the engagements this computation starts from), gathered on
-   every rank. Called before compute_normals() at the start of a run (the
-   whole half list) and before the pair pass (the split list of simd_split()
-   where the vector pass runs, split = 1): the same positions, the same
-   bodies. The cells are looked at only where two real particles of bodies
-   that do not both touch already are close enough for their cells to meet
-   (touch_frames()): in flight and in contact nothing is done but the scan
+   contact/gap touch: the pairs of bodies that touch now, gathered on every
+   rank: two of their real particles within the kernel's reach are both
+   engaged (by the engagements this computation starts from, hq's on the
+   ghosts too), or the cells
+   of two of their real particles meet (touch_cells()). A body touches while
+   it is in such a pair or has an engaged real particle. Called by
+   compute_normals() at the start of a run and before the correction or
+   the pair pass (split = 1: the split list of simd_split(), where the vector
+   pass runs; else the whole half list): the same positions, the same
+   bodies. The cells are looked at only where two real particles of a pair
+   of bodies not touching by engagement are close enough for their cells to
+   meet (touch_frames()): in flight and in contact nothing is done but the
+   scan
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::update_touch(int split)
@@ -142,50 +146,69 @@ void PairESPHSolid::update_touch(int split)
   const double sb = boundary_spacing();
   const double s = (sb > 0.0) ? sb : h0;
   const double reach2 = TOUCH_REACH * TOUCH_REACH * s * s;
+  const double cutsq = cut_global * cut_global;
 
-  std::vector<int> engaged;
+  // known: the engaged bodies (keys (b, b)) and the pairs of bodies with two engaged real
+  // particles in reach; the rest, the cross-body pairs close enough for their cells to meet
+  std::vector<long long> known;
   for (int i = 0; i < atom->nlocal; i++)
-    if (rmass[i] > 0.0 && state->eng[i] > 0.0) engaged.push_back(body[i]);
-  engaged = ESPHCheck::global_set(lmp, engaged);
-  auto is_engaged = [&](int b) {
-    return std::binary_search(engaged.begin(), engaged.end(), b);
-  };
-
-  // the candidates: the pairs of the scalar loop (the cross-body pairs among them) where
-  // the vector pass runs, else the whole half list
-  std::vector<int> cand;
+    if (rmass[i] > 0.0 && hq[i][Q_ENG] > 0.0) known.push_back(touch_key(body[i], body[i]));
+  std::vector<int> near;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (rmass[i] <= 0.0) continue;
     const int bi = body[i];
-    const int ei = is_engaged(bi);
     const int *jlist = split ? simd_j.data() + simd_first[ii] : list->firstneigh[i];
     const int jnum = split ? simd_first[ii + 1] - simd_first[ii] : list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      if (body[j] == bi || rmass[j] <= 0.0 || (ei && is_engaged(body[j]))) continue;
+      if (body[j] == bi || rmass[j] <= 0.0) continue;
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2] > reach2) continue;
-      cand.push_back(i);
-      cand.push_back(j);
+      const double r2 = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
+      if (hq[i][Q_ENG] > 0.0 && hq[j][Q_ENG] > 0.0 && r2 < cutsq)
+        known.push_back(touch_key(bi, body[j]));
+      if (r2 <= reach2) {
+        near.push_back(i);
+        near.push_back(j);
+      }
     }
   }
+  known = ESPHCheck::global_set(lmp, known);
+  std::vector<int> cand;
+  for (size_t k = 0; k < near.size(); k += 2)
+    if (!std::binary_search(known.begin(), known.end(),
+                            touch_key(body[near[k]], body[near[k + 1]]))) {
+      cand.push_back(near[k]);
+      cand.push_back(near[k + 1]);
+    }
   int any = !cand.empty(), any_all = 0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   if (any_all) {
     touch_mark.assign(nall, 0.0);
     for (int i : cand) touch_mark[i] = 1.0;
     touch_frames(s);
+    std::vector<long long> found;
     for (size_t k = 0; k < cand.size(); k += 2) {
       const int i = cand[k], j = cand[k + 1];
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (touch_cells(xij, &touch_frame[9 * i], &touch_frame[9 * j], s)) {
-        engaged.push_back(body[i]);
-        engaged.push_back(body[j]);
-      }
+      if (touch_cells(xij, &touch_frame[9 * i], &touch_frame[9 * j], s))
+        found.push_back(touch_key(body[i], body[j]));
     }
+    found = ESPHCheck::global_set(lmp, found);
+    known.insert(known.end(), found.begin(), found.end());
+    std::sort(known.begin(), known.end());
   }
-  touch_bodies = ESPHCheck::global_set(lmp, engaged);
+  touch_pairs.clear();
+  touch_bodies.clear();
+  for (long long k : known) {
+    const int a = (int) (unsigned) ((unsigned long long) k >> 32);
+    const int b = (int) (unsigned) ((unsigned long long) k & 0xffffffffULL);
+    touch_bodies.push_back(a);
+    touch_bodies.push_back(b);
+    if (a != b) touch_pairs.push_back(k);
+  }
+  std::sort(touch_bodies.begin(), touch_bodies.end());
+  touch_bodies.erase(std::unique(touch_bodies.begin(), touch_bodies.end()), touch_bodies.end());
 }
 
 /* ----------------------------------------------------------------------
@@ -272,13 +295,20 @@ bool PairESPHSolid::touch_body(int b) const
   return std::binary_search(touch_bodies.begin(), touch_bodies.end(), b);
 }
 
+/* bodies a and b touch: their real particles may interact */
+
+bool PairESPHSolid::touch_pair_on(int a, int b) const
+{
+  return std::binary_search(touch_pairs.begin(), touch_pairs.end(), touch_key(a, b));
+}
+
 /* ----------------------------------------------------------------------
    normals (eq. 30) and depths of real particles from the boundary particles
    of their own body; used at the start of a run, later they come with the
-   regular pair loop
+   regular pair loop; with touch, the touch first (update_touch())
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::compute_normals()
+void PairESPHSolid::compute_normals(int touch)
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -290,7 +320,8 @@ void PairESPHSolid::compute_normals()
   const double cutsq_global = cut_global * cut_global;
   const int solid = (contact == CONTACT_SOLID);
 
-  // normals, h and velocities of the boundary particles must be known on ghosts
+  // normals, h and velocities of the boundary particles must be known on ghosts (and the
+  // engagements, for the touch)
   for (int i = 0; i < nlocal; i++) {
     for (int d = 0; d < 3; d++) {
       hq[i][Q_N + d] = state->n[i][d];
@@ -300,7 +331,8 @@ void PairESPHSolid::compute_normals()
     hq[i][Q_ENG] = state->eng[i];
   }
   comm_stage = COMM_NORMALS;
-  comm->forward_comm(this, 7);
+  comm->forward_comm(this, 8);
+  if (touch) update_touch(0);
   for (int i = 0; i < nall; i++) {
     for (int k = A_NSUM; k <= A_WSUM; k++) acc[i][k] = 0.0;
     if (qcol_n >= 0)

@@ -335,7 +335,9 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           double phi = 1.0;
           int touching;
           if (solid) {
-            const double gap = solid_gap(qi, qj, dt);
+            // (contact/gap touch: only bodies that touch each other)
+            const double gap =
+                (touch_on_run && !touch_pair_on(bi, body[j])) ? GAP_NONE : solid_gap(qi, qj, dt);
             // touching: closed, or open by no more than round-off (faces that coincide in exact
             // arithmetic are a round-off distance apart in a rotated scene); counted before
             // the gate

@@ -14,7 +14,8 @@ projection alone couples the corners 0.26 spacings before the faces meet, contac
 plane 0.066. The cells are the particles' lattice cells, turned with the body: the scene
 turned as a whole touches when the aligned one does (before 2026-12-06 the cells were the
 box's: turned 45 degrees about z the corners coupled 0.26 spacings early, as under the
-projection alone). On 1 and 2 ranks. About 40 seconds."""
+projection alone). The touch is per pair of bodies: a third block touching the larger one
+does not let the small one couple early. On 1 and 2 ranks. About 50 seconds."""
 
 import esphtest as et
 
@@ -85,6 +86,25 @@ c.true("turned 30 degrees: 2 ranks touch at the step of 1", t2["t_first_us"] == 
        "the cells' frames from the same neighbours on every rank")
 c.less(f"turned 30 degrees: contact force after {NSTEPS} steps, 2 ranks against 1, relative",
        abs(t2["force"] / t["force"] - 1.0), 1e-10, "round-off")
+
+# a third block under the larger one, touching it at rest from the start: the touch is per
+# pair of bodies, so the small block still couples with the larger one only when their
+# cells meet (before 2026-12-06 it was per body: the larger block touched the third, and the
+# small one coupled with it by the projection at 0.26 us, as without the touch)
+for np_ in (1, 2):
+    s3 = et.summary(et.run(a, INP, {"third": 1, "nsteps": NSTEPS}, np=np_,
+                           log=f"log.third_np{np_}"), "GAP_EDGE3")
+    print(f"INFO third block, np {np_}: {s3}")
+    if np_ == 1:
+        t3 = s3
+        c.less("third block touching the larger one: gap at the small block's first touch "
+               "[spacings]", abs(T_MEET - s3["t12_us"]) / SPACING_US, 0.03,
+               "per pair of bodies: as without the third block (measured 0.0192; per body 0.26)")
+        c.true("third block: it touches the larger one from the first step",
+               s3["t13_us"] == 0.0, "they start touching")
+    else:
+        c.true("third block: 2 ranks touch at the step of 1", s3["t12_us"] == t3["t12_us"],
+               "the touching pairs of bodies gathered on every rank")
 
 # contact/gap projection (the rule under the touch): the small block's bottom corners read
 # -0.34 spacings with the faces 0.32 apart, and the blocks touch at 0.26 us (the faces 0.26
