@@ -125,9 +125,9 @@ void PairESPHSolid::store_bnd_gap(int i)
    contact/gap touch: the pairs of bodies that touch now, gathered on every
    rank: two of their real particles within the kernel's reach are both
    engaged (by the engagements this computation starts from, hq's on the
-   ghosts too), or the cells
-   of two of their real particles meet (touch_cells()). A body touches while
-   it is in such a pair or has an engaged real particle. Called by
+   ghosts too), or the cells of two of their real particles meet
+   (touch_cells()). A body touches while it is in such a pair or has an
+   engaged real particle. Called by
    compute_normals() at the start of a run and before the correction or
    the pair pass (split = 1: the split list of simd_split(), where the vector
    pass runs; else the whole half list): the same positions, the same
@@ -191,7 +191,7 @@ void PairESPHSolid::update_touch(int split)
     for (size_t k = 0; k < cand.size(); k += 2) {
       const int i = cand[k], j = cand[k + 1];
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (touch_cells(xij, &touch_frame[9 * i], &touch_frame[9 * j], s))
+      if (touch_cells(xij, &touch_frame[9 * (size_t) i], &touch_frame[9 * (size_t) j], s))
         found.push_back(touch_key(body[i], body[j]));
     }
     found = ESPHCheck::global_set(lmp, found);
@@ -234,7 +234,7 @@ void PairESPHSolid::touch_frames(double s)
   }
   touch_frame.assign(9 * (size_t) nall, 0.0);
   for (int i = 0; i < nall; i++)
-    for (int a = 0; a < 3; a++) touch_frame[9 * i + 4 * a] = 1.0;
+    for (int a = 0; a < 3; a++) touch_frame[9 * (size_t) i + 4 * a] = 1.0;
 
   // the real particles in the grid cells around the marked ones
   const double size = TOUCH_SHELL_HI * s;
