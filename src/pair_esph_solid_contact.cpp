@@ -150,9 +150,14 @@ void PairESPHSolid::update_touch(int split)
 
   // known: the engaged bodies (keys (b, b)) and the pairs of bodies with two engaged real
   // particles in reach; the rest, the cross-body pairs close enough for their cells to meet
+  // (a handful of keys: each is added once, and the pairs of bodies known here already are
+  // no candidates)
   std::vector<long long> known;
+  auto add_known = [&known](long long k) {
+    if (std::find(known.begin(), known.end(), k) == known.end()) known.push_back(k);
+  };
   for (int i = 0; i < atom->nlocal; i++)
-    if (rmass[i] > 0.0 && hq[i][Q_ENG] > 0.0) known.push_back(touch_key(body[i], body[i]));
+    if (rmass[i] > 0.0 && hq[i][Q_ENG] > 0.0) add_known(touch_key(body[i], body[i]));
   std::vector<int> near;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -165,9 +170,10 @@ void PairESPHSolid::update_touch(int split)
       if (body[j] == bi || rmass[j] <= 0.0) continue;
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r2 = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
-      if (hq[i][Q_ENG] > 0.0 && hq[j][Q_ENG] > 0.0 && r2 < cutsq)
-        known.push_back(touch_key(bi, body[j]));
-      if (r2 <= reach2) {
+      if (r2 > reach2 && r2 >= cutsq) continue;
+      const long long key = touch_key(bi, body[j]);
+      if (hq[i][Q_ENG] > 0.0 && hq[j][Q_ENG] > 0.0 && r2 < cutsq) add_known(key);
+      if (r2 <= reach2 && std::find(known.begin(), known.end(), key) == known.end()) {
         near.push_back(i);
         near.push_back(j);
       }
