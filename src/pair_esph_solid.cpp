@@ -635,7 +635,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
                "Pair esph/solid: internal error, {} values per atom to communicate, {} sized",
                nforward, comm_forward);
   const int touch = bnd && touch_on_run;
-  if (bnd && !normals_valid) { compute_normals(touch); }
+  if (bnd && !normals_valid) compute_normals(touch);
   // (before hoist(), which then also writes the slots only the vector pass reads)
   simd_active = simd_ready();
   hoist();

@@ -25,6 +25,7 @@ PairStyle(esph/solid,PairESPHSolid);
 #include "esph_eos.h"
 #include "esph_units.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <utility>
@@ -250,7 +251,12 @@ class PairESPHSolid : public Pair {
   void update_touch(int);
   void touch_frames(double);
   bool touch_body(int) const;
-  bool touch_pair_on(int, int) const;
+  // bodies a and b touch: their real particles may interact (in the pair loop, per
+  // cross-body pair: inline)
+  bool touch_pair_on(int a, int b) const
+  {
+    return std::binary_search(touch_pairs.begin(), touch_pairs.end(), touch_key(a, b));
+  }
   static long long touch_key(int a, int b)
   {
     if (a > b) std::swap(a, b);

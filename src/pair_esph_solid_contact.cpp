@@ -238,8 +238,9 @@ void PairESPHSolid::touch_frames(double s)
     comm_stage = COMM_TOUCH;
     comm->reverse_comm(this, 1);
   }
+  // the box's axes on the owned atoms; the ghosts' frames come with the communication below
   touch_frame.assign(9 * (size_t) nall, 0.0);
-  for (int i = 0; i < nall; i++)
+  for (int i = 0; i < nlocal; i++)
     for (int a = 0; a < 3; a++) touch_frame[9 * (size_t) i + 4 * a] = 1.0;
 
   // the real particles in the grid cells around the marked ones
@@ -299,13 +300,6 @@ void PairESPHSolid::touch_frames(double s)
 bool PairESPHSolid::touch_body(int b) const
 {
   return std::binary_search(touch_bodies.begin(), touch_bodies.end(), b);
-}
-
-/* bodies a and b touch: their real particles may interact */
-
-bool PairESPHSolid::touch_pair_on(int a, int b) const
-{
-  return std::binary_search(touch_pairs.begin(), touch_pairs.end(), touch_key(a, b));
 }
 
 /* ----------------------------------------------------------------------
