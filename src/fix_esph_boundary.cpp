@@ -66,6 +66,10 @@ static constexpr double NEAR_SHELL = 1.5;
 // det 0, minors >= tr^2 / 4; a line: both 0; a lattice body's inside: det tr^3 / 27)
 static constexpr double THIN_DET = 1.0e-6;
 static constexpr double THIN_PLANE = 0.01;
+// more than this fraction of the particles whose nearest neighbours span the space have no
+// simple cubic cell (lattice_frame()): the bodies are not on a simple cubic lattice (on one,
+// every particle has its cell; a staircase surface a few percent without)
+static constexpr double NONCUBIC_WARN = 0.25;
 // keyword region: the surface points searched within this many spacings
 static constexpr double REGION_REACH = 3.0;
 // ... a boundary particle closer than REGION_ON spacings to the surface is looked at from
@@ -512,10 +516,15 @@ void FixESPHBoundary::generate()
   const double hinv = 1.0 / spacing;
   const int reach = (int) ceil(reach_len / cut);
 
-  std::vector<double> newx, newn, nearest;
+  std::vector<double> newx, newn, nearest, planar;
   std::vector<int> src;
   bigint nthin = 0;
   tagint thin_tag = 0;
+  // particles whose nearest neighbours span the space, and those of them without a simple
+  // cubic (2d: square) cell (lattice_frame()): another lattice or an irregular cloud
+  bigint nspan = 0, noncubic = 0;
+  tagint noncubic_tag = 0;
+  double frame[9];
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     const double *xi = atom->x[i];
@@ -553,20 +562,41 @@ void FixESPHBoundary::generate()
     // one line (a chain is the 1D model), is in a sheet one particle thick: its two faces
     // need two boundary particles, and it makes at most one (none inside the sheet, where
     // the neighbours balance): counted for a warning
-    if (dim == 3 && nearest.size() >= 9) {
-      double m[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+    // (the same second moment says whether the neighbours span the space: only there is a
+    // missing cubic cell another lattice, not a chain, a sheet or a lone particle)
+    // (in 2d their offsets in the plane: a periodic z of one spacing adds the particle's
+    // own images straight above and below)
+    const std::vector<double> *nb = &nearest;
+    if (dim == 2) {
+      planar.clear();
       for (size_t k = 0; k < nearest.size(); k += 3)
+        if (nearest[k] != 0.0 || nearest[k + 1] != 0.0)
+          planar.insert(planar.end(), {nearest[k], nearest[k + 1], 0.0});
+      nb = &planar;
+    }
+    if (nb->size() >= 3 * (size_t) dim) {
+      double m[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+      for (size_t k = 0; k < nb->size(); k += 3)
         for (int a = 0; a < 3; a++)
-          for (int b = 0; b < 3; b++) m[a][b] += nearest[k + a] * nearest[k + b];
+          for (int b = 0; b < 3; b++) m[a][b] += (*nb)[k + a] * (*nb)[k + b];
       const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
       const double tr = m[0][0] + m[1][1] + m[2][2];
       const double minors = m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] -
           m[0][2] * m[2][0] + m[1][1] * m[2][2] - m[1][2] * m[2][1];
-      if (det < THIN_DET * tr * tr * tr && minors > THIN_PLANE * tr * tr) {
+      const bool spans = (dim == 3) ? det >= THIN_DET * tr * tr * tr
+                                    : m[0][0] * m[1][1] - m[0][1] * m[1][0] > THIN_PLANE * tr * tr;
+      if (dim == 3 && !spans && minors > THIN_PLANE * tr * tr) {
         if (!nthin) thin_tag = atom->tag[i];
         nthin++;
+      }
+      if (spans) {
+        nspan++;
+        if (!ESPH::lattice_frame(nb->data(), nb->size() / 3, spacing, dim, frame)) {
+          if (!noncubic) noncubic_tag = atom->tag[i];
+          noncubic++;
+        }
       }
     }
     if (dim == 2) c[2] = 0.0;
@@ -610,6 +640,26 @@ void FixESPHBoundary::generate()
                      "such a layer at its edges only and pass through its faces; build sheets, "
                      "rods and plates at least two particles thick",
                      thin_all, tfirst);
+  }
+  {
+    bigint counts[2] = {nspan, noncubic}, counts_all[2];
+    MPI_Allreduce(counts, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+    tagint tmine = noncubic ? noncubic_tag : MAXTAGINT, tfirst;
+    MPI_Allreduce(&tmine, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (counts_all[1] > NONCUBIC_WARN * counts_all[0] && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix esph/boundary: {} of {} real particles of group {} (e.g. atom {}) have "
+                     "no {} neighbourhood ({} nearly normal neighbours about one spacing away): "
+                     "the bodies are on another lattice (fcc, bcc, hcp, hex) or irregular. The "
+                     "boundary particles are placed where the cell of a {} lattice of spacing "
+                     "{} ends, and the contact's touch uses such cells: on other arrangements "
+                     "contact starts away from where the surfaces meet (fcc cubes face to face: "
+                     "0.3 spacings early) and edges meeting edges can pass through each other. "
+                     "Build the bodies with lattice {}, or give the boundary particles with "
+                     "keyword given",
+                     counts_all[1], counts_all[0], group->names[igroup], tfirst,
+                     dim == 3 ? "simple cubic" : "square", dim == 3 ? "three" : "two",
+                     dim == 3 ? "simple cubic" : "square", spacing, dim == 3 ? "sc" : "sq");
   }
   if (fit > 0.0) fit_normals(newx, newn, src);
   if (!region_ids.empty()) region_normals(newx, newn, src);

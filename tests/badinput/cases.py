@@ -690,6 +690,20 @@ CASES = [
      "warning:degrees off the direction away from their body"),
     ("bf_rotate_before_boundary",
      [B("fix_bnd", "displace_atoms b rotate 0.0002 0 0 0 0 1 90 units box")], "runs"),
+    # bodies on another lattice than simple cubic: the boundary particles and the touch's cells
+    # are those of a simple cubic lattice (a hostile round: two fcc cubes turned 45 degrees
+    # meeting edge to edge passed through each other without a message); fcc and bcc with
+    # the spacing their nearest-neighbour distance (0.1 mm), sites clear of the blocks' faces
+    ("bf_lattice_fcc", [R("lattice", "lattice fcc 1.4142136e-4 origin 0.25 0.25 0.25")],
+     "warning:have no simple cubic neighbourhood"),
+    ("bf_lattice_fcc_np2", [R("lattice", "lattice fcc 1.4142136e-4 origin 0.25 0.25 0.25")],
+     "warning:have no simple cubic neighbourhood", 2),
+    ("bf_lattice_bcc", [R("lattice", "lattice bcc 1.1547005e-4 origin 0.25 0.25 0.25")],
+     "warning:have no simple cubic neighbourhood"),
+    # a simple cubic lattice turned off the box axes has its cells: no warning
+    ("bf_lattice_sc_turned",
+     [B("fix_bnd", "displace_atoms all rotate 0 0 0 1 2 3 30 units box"),
+      R("box", "region box block -0.0008 0.0008 -0.0008 0.0008 -0.0008 0.0008")], "runs"),
     ("bf_spacing_tenth", [R("fix_bnd", FB + "spacing 1e-5")],
      "error:have no particle of their own body within 3 x spacing"),
     # ---------------- the same errors on two MPI ranks ----------------
