@@ -392,28 +392,47 @@ struct Pt {
 
 /* ----------------------------------------------------------------------
    the position p and its periodic images within reach of a periodic box face
-   (up to 27): returns their number, the positions in img
+   (up to 27): returns their number, the positions in img. A triclinic box's
+   faces are those of its parallelepiped: the distance to them and the shifts
+   between images are the box vectors' (a shift across y moves x by xy), so
+   the images come from the fractional coordinates
 ------------------------------------------------------------------------- */
 
-static int periodic_images(const Domain *domain, const double *p, double reach, double img[][3])
+static int periodic_images(Domain *domain, const double *p, double reach, double img[][3])
 {
   const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
   const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
   int sh[3][3], ns[3];
+  double lam[3];
+  if (domain->triclinic) {
+    double x[3] = {p[0], p[1], p[2]};
+    domain->x2lamda(x, lam);
+  }
+  // the distance to a face in fractional units: reach times the length of the row of
+  // h_inv that gives that fraction (as LAMMPS's communication cutoff of a triclinic box)
+  const double *hinv = domain->h_inv;
+  const double len[3] = {sqrt(hinv[0] * hinv[0] + hinv[5] * hinv[5] + hinv[4] * hinv[4]),
+                         sqrt(hinv[1] * hinv[1] + hinv[3] * hinv[3]), hinv[2]};
   for (int d = 0; d < 3; d++) {
     ns[d] = 0;
     sh[d][ns[d]++] = 0;
-    if (per[d] && p[d] < lo[d] + reach) sh[d][ns[d]++] = 1;
-    if (per[d] && p[d] > hi[d] - reach) sh[d][ns[d]++] = -1;
+    if (!per[d]) continue;
+    const bool nearlo = domain->triclinic ? lam[d] < reach * len[d] : p[d] < lo[d] + reach;
+    const bool nearhi = domain->triclinic ? lam[d] > 1.0 - reach * len[d] : p[d] > hi[d] - reach;
+    if (nearlo) sh[d][ns[d]++] = 1;
+    if (nearhi) sh[d][ns[d]++] = -1;
   }
+  // the box vectors (h: xprd, yprd, zprd, yz, xz, xy)
+  const double *h = domain->h;
+  const double A[3] = {prd[0], 0.0, 0.0};
+  const double B[3] = {domain->triclinic ? h[5] : 0.0, prd[1], 0.0};
+  const double C[3] = {domain->triclinic ? h[4] : 0.0, domain->triclinic ? h[3] : 0.0, prd[2]};
   int n = 0;
   for (int a = 0; a < ns[0]; a++)
     for (int b = 0; b < ns[1]; b++)
-      for (int c = 0; c < ns[2]; c++, n++) {
-        img[n][0] = p[0] + sh[0][a] * prd[0];
-        img[n][1] = p[1] + sh[1][b] * prd[1];
-        img[n][2] = p[2] + sh[2][c] * prd[2];
-      }
+      for (int c = 0; c < ns[2]; c++, n++)
+        for (int d = 0; d < 3; d++)
+          img[n][d] = p[d] + sh[0][a] * A[d] + sh[1][b] * B[d] + sh[2][c] * C[d];
   return n;
 }
 
