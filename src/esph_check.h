@@ -85,7 +85,8 @@ namespace ESPHCheck {
   void rigid_bodies(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
 
   // deformable real particles (types without rigid yes) outside the group of fix
-  // esph/integrate: nothing updates their density, stress and energy (said in the log)
+  // esph/integrate: nothing updates their density, stress and energy (said in the log);
+  // those and rigid ones with a velocity that no fix applies (a warning each)
   void unintegrated(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
 
   // median distance from each real particle of the group to its nearest real

@@ -314,6 +314,16 @@ CASES = [
      [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
       R("fix_int", "fix int a esph/integrate"), A("velocity", "velocity b set -20 0 0 units box")],
      "warning:has a velocity but no fix moves it"),
+    # a deformable block left out of the group of fix esph/integrate, with a velocity no fix
+    # applies (a hostile round: it stayed in place while its velocity pumped the impactor
+    # from 50 to 89 m/s, without a message); at rest it is a frozen wall (no warning)
+    ("fi_outside_group_velocity_unmoved",
+     [R("fix_int", "fix int a esph/integrate"), A("velocity", "velocity b set 0 100 0 units box")],
+     "warning:is outside the group of fix esph/integrate int and has a velocity", 2),
+    ("fi_outside_group_at_rest", [R("fix_int", "fix int a esph/integrate")], "runs"),
+    ("fi_outside_group_velocity_moved",
+     [R("fix_int", "fix int a esph/integrate"), A("velocity", "velocity b set -20 0 0 units box"),
+      A("velocity", "fix mv b move linear -20 0 0")], "runs"),
     ("pc_rigid_velocity_moved",
      [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
       R("fix_int", "fix int a esph/integrate"), A("velocity", "velocity b set -20 0 0 units box"),
