@@ -388,18 +388,21 @@ void ESPHCheck::rigid_bodies(LAMMPS *lmp, ESPHState *st, Fix *fix_int, const int
 
 /* ---------------------------------------------------------------------- */
 
-void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos, double spacing, int dim)
+void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos,
+                        const std::function<double(int)> &spacing_of, int dim)
 {
   Atom *atom = lmp->atom;
   st->fetch();
   const int *type = atom->type;
-  const double vol0 = (spacing > 0.0) ? pow(spacing, dim) : 0.0;
   const double off[2] = {DENSITY_OFF, VOLUME_OFF};
   // count, smallest and largest ratio of the particles off: density, volume
   bigint n[2] = {0, 0}, nall[2];
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, loall[2], hiall[2];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(st->rmass[i] > 0.0) || !(st->rho[i] > 0.0)) continue;
+    // (the spacing of the particle's body: 0 without fix esph/boundary)
+    const double spacing = spacing_of(st->body ? st->body[i] : 0);
+    const double vol0 = (spacing > 0.0) ? pow(spacing, dim) : 0.0;
     const double r[2] = {st->rho[i] / eos[type[i]].rho0,
                          vol0 > 0.0 ? st->rmass[i] / st->rho[i] / vol0 : 1.0};
     for (int k = 0; k < 2; k++)

@@ -25,6 +25,7 @@
 
 #include "lmptype.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -98,7 +99,8 @@ namespace ESPHCheck {
   // their type (outside [1/DENSITY_OFF, DENSITY_OFF] x rho0: pair_coeff rho0 changed between
   // runs), and, with spacing > 0 (fix esph/boundary), whose volume m / rho is far from
   // spacing^dim (outside [1/VOLUME_OFF, VOLUME_OFF]: a mass in the wrong unit)
-  void volumes(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos, double spacing, int dim);
+  void volumes(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos,
+               const std::function<double(int)> &spacing_of, int dim);
 
   // the smoothing length h0 of pair esph/solid and, with hvar, the largest h0 x hmax the
   // neighbour cutoff admits, against the particle spacing of fix esph/boundary (> 0): an

@@ -251,21 +251,25 @@ inline bool lattice_frame(const double *d, int n, double s, int dim, double *f)
   return ok;
 }
 
-/* two cells meet: cubes of side (1 + TOUCH_TOL) s centred xij apart, with frames fi and fj
+/* two cells meet: cubes of sides (1 + TOUCH_TOL) si and (1 + TOUCH_TOL) sj (the spacings
+   of the two particles' bodies; sj < 0: si) centred xij apart, with frames fi and fj
    (lattice_frame()), are not separated along any of the 15 axes of the separating axis
    theorem (the six face normals and the nine cross products of edges). With the box's
-   frames on both: max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) s */
+   frames on both: max(|x_ij|, |y_ij|, |z_ij|) <= (1 + TOUCH_TOL) (si + sj) / 2 */
 
-inline bool touch_cells(const double *xij, const double *fi, const double *fj, double s)
+inline bool touch_cells(const double *xij, const double *fi, const double *fj, double si,
+                        double sj = -1.0)
 {
-  const double r = 0.5 * (1.0 + TOUCH_TOL) * s;
+  const bool same = !(sj >= 0.0) || sj == si;
+  const double r = 0.5 * (1.0 + TOUCH_TOL) * si, rb = same ? r : 0.5 * (1.0 + TOUCH_TOL) * sj;
   auto separates = [&](const double *l) {
     double ri = 0.0, rj = 0.0;
     for (int a = 0; a < 3; a++) {
       ri += fabs(l[0] * fi[3 * a] + l[1] * fi[3 * a + 1] + l[2] * fi[3 * a + 2]);
       rj += fabs(l[0] * fj[3 * a] + l[1] * fj[3 * a + 1] + l[2] * fj[3 * a + 2]);
     }
-    return fabs(l[0] * xij[0] + l[1] * xij[1] + l[2] * xij[2]) > r * (ri + rj);
+    return fabs(l[0] * xij[0] + l[1] * xij[1] + l[2] * xij[2]) >
+        (same ? r * (ri + rj) : r * ri + rb * rj);
   };
   for (int a = 0; a < 3; a++)
     if (separates(fi + 3 * a) || separates(fj + 3 * a)) return false;

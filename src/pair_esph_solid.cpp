@@ -61,7 +61,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
     cpl(nullptr), acc_cols(A_NN), hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0),
     recon_keep(0), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr),
-    state(nullptr), fix_int(nullptr), nthreads(1)
+    state(nullptr), fix_int(nullptr), spacing_lo(0.0), spacing_hi(0.0), nthreads(1)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -166,6 +166,7 @@ void PairESPHSolid::init_style()
                  "(boundary particles with normals); use contact off for traditional SPH",
                  contact == CONTACT_PAPER ? "paper" : "solid", gmin, gmax);
   }
+  init_spacings();
   init_turn();
   init_recon();
   init_cone();
@@ -179,8 +180,8 @@ void PairESPHSolid::init_style()
     touch_on_run = anybnd && (gmin != gmax);
   }
   // the reach of a surface-gap partner, in the boundary particles' spacing (the smoothing
-  // length where no fix esph/boundary gives it)
-  const double sb = boundary_spacing();
+  // length where no fix esph/boundary gives it; the largest of several)
+  const double sb = spacing_hi;
   const double reach = GAP_REACH * ((sb > 0.0) ? sb : h0);
   gap_reach2 = reach * reach;
   // contact/couple: only where cross-body pair forces can have a couple (not in 1d)
@@ -439,7 +440,12 @@ void PairESPHSolid::setup()
                    contact != CONTACT_OFF ? boundary_spacing() : 0.0);
   {
     const double spacing = boundary_spacing();
-    ESPHCheck::volumes(lmp, state, eos, spacing, dim);
+    ESPHCheck::volumes(
+        lmp, state, eos,
+        [this](int b) {
+          return spacing_of(b);
+        },
+        dim);
     // the artificial stress's dp is the particle spacing (Monaghan 2000)
     if (astress_flag && spacing > 0.0 && comm->me == 0 &&
         (astress_dp > 2.0 * spacing || astress_dp < 0.5 * spacing))
@@ -686,10 +692,61 @@ FixESPHBoundary *PairESPHSolid::boundary_fix() const
   return fixes.empty() ? nullptr : dynamic_cast<FixESPHBoundary *>(fixes[0]);
 }
 
-double PairESPHSolid::boundary_spacing() const
+/* ----------------------------------------------------------------------
+   the spacing of each body from the fixes esph/boundary whose groups hold
+   its real particles (collective): bodies may sit on lattices of different
+   spacings, each with a fix of its own (the touch's cells, the reach of the
+   gap's partners and the checks use them); a body in the groups of two
+   fixes with different spacings is an error
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::init_spacings()
 {
-  const FixESPHBoundary *bfix = boundary_fix();
-  return bfix ? bfix->get_spacing() : 0.0;
+  const auto fixes = modify->get_fix_by_style("^esph/boundary$");
+  body_spacings.clear();
+  spacing_lo = spacing_hi = 0.0;
+  if (fixes.empty()) return;
+  std::vector<double> sp;
+  for (const auto *f : fixes) sp.push_back(dynamic_cast<const FixESPHBoundary *>(f)->get_spacing());
+  spacing_lo = *std::min_element(sp.begin(), sp.end());
+  spacing_hi = *std::max_element(sp.begin(), sp.end());
+  if (spacing_lo == spacing_hi) return;
+  // (body, fix) of the real particles in the fixes' groups, gathered on every rank
+  state->fetch();
+  std::vector<long long> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(state->rmass[i] > 0.0)) continue;
+    for (size_t k = 0; k < fixes.size(); k++)
+      if (atom->mask[i] & fixes[k]->groupbit)
+        mine.push_back((long long) (((unsigned long long) (unsigned) state->body[i] << 32) | k));
+  }
+  for (long long key : ESPHCheck::global_set(lmp, mine)) {
+    const int b = (int) (unsigned) ((unsigned long long) key >> 32);
+    const int k = (int) (unsigned) ((unsigned long long) key & 0xffffffffULL);
+    if (!body_spacings.empty() && body_spacings.back().first == b) {
+      if (body_spacings.back().second != sp[k])
+        error->all(FLERR, Error::NOLASTLINE,
+                   "Body {} (i_esph_body) has real particles in the groups of fixes esph/boundary "
+                   "with spacings {} and {}: a body is on one lattice; give each body one spacing",
+                   b, body_spacings.back().second, sp[k]);
+      continue;
+    }
+    body_spacings.emplace_back(b, sp[k]);
+  }
+  // (the keys sort the bodies as unsigned numbers)
+  std::sort(body_spacings.begin(), body_spacings.end());
+}
+
+/* the spacing of body b (the smallest spacing where no fix's group holds it) */
+
+double PairESPHSolid::spacing_of(int b) const
+{
+  if (spacing_lo == spacing_hi) return spacing_lo;
+  const auto it = std::lower_bound(body_spacings.begin(), body_spacings.end(), b,
+                                   [](const std::pair<int, double> &p, int key) {
+                                     return p.first < key;
+                                   });
+  return (it != body_spacings.end() && it->first == b) ? it->second : spacing_lo;
 }
 
 /* ----------------------------------------------------------------------

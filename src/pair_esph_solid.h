@@ -122,6 +122,9 @@ class PairESPHSolid : public Pair {
   std::vector<long long> touch_pairs;
   // ... per atom: marked for a look at its cell, and its cell's frame (touch_frames())
   std::vector<double> touch_mark, touch_frame;
+  // the spacings of the bodies (body, spacing; sorted), the smallest and largest
+  std::vector<std::pair<int, double>> body_spacings;
+  double spacing_lo, spacing_hi;
   // contact/couple per atom: 0..2 the couple T, then u = J^-1 T; 3..8 J (Voigt); 9 the
   // power of the forces that carry it; the columns [couple_k0, couple_k1) communicated
   double **cpl;
@@ -240,16 +243,20 @@ class PairESPHSolid : public Pair {
   virtual void allocate();
   void set_defaults();
   void grow_work();
-  // fix esph/boundary (nullptr without it) and its particle spacing (0 without it)
+  // fix esph/boundary (nullptr without it: the first with several) and the particle spacing
+  // of the bodies: the smallest of the fixes (0 without one); each body's own (init_spacings(),
+  // spacing_of(): several fixes may give bodies on lattices of different spacings)
   class FixESPHBoundary *boundary_fix() const;
-  double boundary_spacing() const;
+  double boundary_spacing() const { return spacing_lo; }
+  void init_spacings();
+  double spacing_of(int body) const;
   void hoist();
   void finalize(int eflag);
   void init_turn();
   void turn_with_bodies();
   void compute_normals(int);
   void update_touch(int);
-  void touch_frames(double);
+  void touch_frames(double, const double *);
   bool touch_body(int) const;
   // bodies a and b touch: their real particles may interact (in the pair loop, per
   // cross-body pair: inline)

@@ -147,6 +147,13 @@ void PairESPHSolid::update_touch(int split)
   const double s = (sb > 0.0) ? sb : h0;
   const double reach2 = TOUCH_REACH * TOUCH_REACH * s * s;
   const double cutsq = cut_global * cut_global;
+  // each particle's spacing, its body's, where bodies sit on lattices of different spacings
+  // (nullptr: all s)
+  std::vector<double> spv;
+  const int uniform = (spacing_lo == spacing_hi);
+  if (!uniform)
+    for (int i = 0; i < nall; i++) spv.push_back(rmass[i] > 0.0 ? spacing_of(body[i]) : s);
+  const double *sp = uniform ? nullptr : spv.data();
 
   // known: the engaged bodies (keys (b, b)) and the pairs of bodies with two engaged real
   // particles in reach; the rest, the cross-body pairs close enough for their cells to meet
@@ -170,10 +177,13 @@ void PairESPHSolid::update_touch(int split)
       if (body[j] == bi || rmass[j] <= 0.0) continue;
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r2 = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
-      if (r2 > reach2 && r2 >= cutsq) continue;
+      // (the sum of the two cells' half diagonals)
+      const double sij = uniform ? s : 0.5 * (sp[i] + sp[j]);
+      const double rch2 = uniform ? reach2 : TOUCH_REACH * TOUCH_REACH * sij * sij;
+      if (r2 > rch2 && r2 >= cutsq) continue;
       const long long key = touch_key(bi, body[j]);
       if (hq[i][Q_ENG] > 0.0 && hq[j][Q_ENG] > 0.0 && r2 < cutsq) add_known(key);
-      if (r2 <= reach2 && std::find(known.begin(), known.end(), key) == known.end()) {
+      if (r2 <= rch2 && std::find(known.begin(), known.end(), key) == known.end()) {
         near.push_back(i);
         near.push_back(j);
       }
@@ -192,12 +202,13 @@ void PairESPHSolid::update_touch(int split)
   if (any_all) {
     touch_mark.assign(nall, 0.0);
     for (int i : cand) touch_mark[i] = 1.0;
-    touch_frames(s);
+    touch_frames(s, sp);
     std::vector<long long> found;
     for (size_t k = 0; k < cand.size(); k += 2) {
       const int i = cand[k], j = cand[k + 1];
       const double xij[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      if (touch_cells(xij, &touch_frame[9 * (size_t) i], &touch_frame[9 * (size_t) j], s))
+      if (touch_cells(xij, &touch_frame[9 * (size_t) i], &touch_frame[9 * (size_t) j],
+                      sp ? sp[i] : s, sp ? sp[j] : s))
         found.push_back(touch_key(body[i], body[j]));
     }
     found = ESPHCheck::global_set(lmp, found);
@@ -224,7 +235,7 @@ void PairESPHSolid::update_touch(int split)
    ghosts, gives the neighbours in an order that does not depend on the ranks
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::touch_frames(double s)
+void PairESPHSolid::touch_frames(double s, const double *sp)
 {
   double **x = atom->x;
   const double *rmass = state->rmass;
@@ -243,8 +254,8 @@ void PairESPHSolid::touch_frames(double s)
   for (int i = 0; i < nlocal; i++)
     for (int a = 0; a < 3; a++) touch_frame[9 * (size_t) i + 4 * a] = 1.0;
 
-  // the real particles in the grid cells around the marked ones
-  const double size = TOUCH_SHELL_HI * s;
+  // the real particles in the grid cells around the marked ones (of the largest spacing)
+  const double size = TOUCH_SHELL_HI * (sp ? spacing_hi : s);
   CellGrid grid(domain->boxlo, size);
   std::unordered_set<long long> around;
   for (int i = 0; i < nlocal; i++) {
@@ -289,7 +300,7 @@ void PairESPHSolid::touch_frames(double s)
             for (int q = 0; q < 3; q++) d.push_back(x[j][q] - x[i][q]);
           }
         }
-    lattice_frame(d.data(), (int) d.size() / 3, s, dim, &touch_frame[9 * (size_t) i]);
+    lattice_frame(d.data(), (int) d.size() / 3, sp ? sp[i] : s, dim, &touch_frame[9 * (size_t) i]);
   }
   comm_stage = COMM_TOUCH;
   comm->forward_comm(this, 9);
