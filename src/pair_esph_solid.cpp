@@ -706,19 +706,25 @@ void PairESPHSolid::init_spacings()
   body_spacings.clear();
   spacing_lo = spacing_hi = 0.0;
   if (fixes.empty()) return;
+  // (a fix with given boundary particles may have no spacing: it gives none)
   std::vector<double> sp;
-  for (const auto *f : fixes) sp.push_back(dynamic_cast<const FixESPHBoundary *>(f)->get_spacing());
-  spacing_lo = *std::min_element(sp.begin(), sp.end());
-  spacing_hi = *std::max_element(sp.begin(), sp.end());
+  for (const auto *f : fixes) {
+    sp.push_back(dynamic_cast<const FixESPHBoundary *>(f)->get_spacing());
+    if (sp.back() > 0.0) {
+      spacing_lo = (spacing_lo > 0.0) ? MIN(spacing_lo, sp.back()) : sp.back();
+      spacing_hi = MAX(spacing_hi, sp.back());
+    }
+  }
   if (spacing_lo == spacing_hi) return;
   // (body, fix) of the real particles in the fixes' groups, gathered on every rank
   state->fetch();
   std::vector<long long> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(state->rmass[i] > 0.0)) continue;
+    const int b = state->body ? state->body[i] : 0;
     for (size_t k = 0; k < fixes.size(); k++)
-      if (atom->mask[i] & fixes[k]->groupbit)
-        mine.push_back((long long) (((unsigned long long) (unsigned) state->body[i] << 32) | k));
+      if (sp[k] > 0.0 && (atom->mask[i] & fixes[k]->groupbit))
+        mine.push_back((long long) (((unsigned long long) (unsigned) b << 32) | k));
   }
   for (long long key : ESPHCheck::global_set(lmp, mine)) {
     const int b = (int) (unsigned) ((unsigned long long) key >> 32);
@@ -737,7 +743,7 @@ void PairESPHSolid::init_spacings()
   std::sort(body_spacings.begin(), body_spacings.end());
 }
 
-/* the spacing of body b (the smallest spacing where no fix's group holds it) */
+/* the spacing of body b (the smallest spacing where no fix with a spacing holds it) */
 
 double PairESPHSolid::spacing_of(int b) const
 {

