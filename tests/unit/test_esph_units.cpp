@@ -539,6 +539,26 @@ TEST(Contact, TouchCells)
     const double cout[3] = {0.0, 0.0, zc * s * (1.0 + 1.01 * TOUCH_TOL)};
     EXPECT_TRUE(touch_cells(cin, corner, box, s));
     EXPECT_FALSE(touch_cells(cout, corner, box, s));
+
+    // bodies of different spacings si, sj (several fixes esph/boundary): cubes of sides
+    // (1 + TOUCH_TOL) si and sj, meeting (1 + TOUCH_TOL) (si + sj) / 2 apart along an axis,
+    // and the same seen from either side; sj = si is the one-spacing test
+    const double sj = 1.25 * s;
+    for (double sgn : {1.0, -1.0}) {
+      const double in[3] = {sgn * 0.99 * (1.0 + TOUCH_TOL) * 0.5 * (s + sj), 0.3 * s, 0.0};
+      const double out[3] = {sgn * 1.01 * (1.0 + TOUCH_TOL) * 0.5 * (s + sj), 0.3 * s, 0.0};
+      EXPECT_TRUE(touch_cells(in, box, box, s, sj));
+      EXPECT_TRUE(touch_cells(in, box, box, sj, s));
+      EXPECT_FALSE(touch_cells(out, box, box, s, sj));
+      EXPECT_FALSE(touch_cells(out, box, box, sj, s));
+      // the larger cube alone would reach: with s on both sides the cells are apart
+      EXPECT_FALSE(touch_cells(in, box, box, s, s));
+    }
+    // a turned edge of the finer body on an aligned face of the coarser one
+    const double fin[3] = {0.0, 0.0, (0.5 * sj / s + c) * s * (1.0 + 0.99 * TOUCH_TOL)};
+    const double fout[3] = {0.0, 0.0, (0.5 * sj / s + c) * s * (1.0 + 1.01 * TOUCH_TOL)};
+    EXPECT_TRUE(touch_cells(fin, rx, box, s, sj));
+    EXPECT_FALSE(touch_cells(fout, rx, box, s, sj));
   }
 }
 
