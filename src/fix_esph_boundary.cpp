@@ -403,16 +403,17 @@ static int periodic_images(Domain *domain, const double *p, double reach, double
   const double *lo = domain->boxlo, *hi = domain->boxhi, *prd = domain->prd;
   const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
   int sh[3][3], ns[3];
-  double lam[3];
+  // (triclinic) the distance to a face in fractional units: reach times the length of the
+  // row of h_inv that gives that fraction (as LAMMPS's communication cutoff of a triclinic box)
+  double lam[3] = {0.0, 0.0, 0.0}, len[3] = {0.0, 0.0, 0.0};
   if (domain->triclinic) {
     double x[3] = {p[0], p[1], p[2]};
     domain->x2lamda(x, lam);
+    const double *hinv = domain->h_inv;
+    len[0] = sqrt(hinv[0] * hinv[0] + hinv[5] * hinv[5] + hinv[4] * hinv[4]);
+    len[1] = sqrt(hinv[1] * hinv[1] + hinv[3] * hinv[3]);
+    len[2] = hinv[2];
   }
-  // the distance to a face in fractional units: reach times the length of the row of
-  // h_inv that gives that fraction (as LAMMPS's communication cutoff of a triclinic box)
-  const double *hinv = domain->h_inv;
-  const double len[3] = {sqrt(hinv[0] * hinv[0] + hinv[5] * hinv[5] + hinv[4] * hinv[4]),
-                         sqrt(hinv[1] * hinv[1] + hinv[3] * hinv[3]), hinv[2]};
   for (int d = 0; d < 3; d++) {
     ns[d] = 0;
     sh[d][ns[d]++] = 0;

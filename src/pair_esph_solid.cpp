@@ -723,12 +723,11 @@ void PairESPHSolid::init_spacings()
     if (!(state->rmass[i] > 0.0)) continue;
     const int b = state->body ? state->body[i] : 0;
     for (size_t k = 0; k < fixes.size(); k++)
-      if (sp[k] > 0.0 && (atom->mask[i] & fixes[k]->groupbit))
-        mine.push_back((long long) (((unsigned long long) (unsigned) b << 32) | k));
+      if (sp[k] > 0.0 && (atom->mask[i] & fixes[k]->groupbit)) mine.push_back(pack_key(b, (int) k));
   }
   for (long long key : ESPHCheck::global_set(lmp, mine)) {
-    const int b = (int) (unsigned) ((unsigned long long) key >> 32);
-    const int k = (int) (unsigned) ((unsigned long long) key & 0xffffffffULL);
+    int b, k;
+    unpack_key(key, b, k);
     if (!body_spacings.empty() && body_spacings.back().first == b) {
       if (body_spacings.back().second != sp[k])
         error->all(FLERR, Error::NOLASTLINE,

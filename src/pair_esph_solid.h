@@ -264,11 +264,21 @@ class PairESPHSolid : public Pair {
   {
     return std::binary_search(touch_pairs.begin(), touch_pairs.end(), touch_key(a, b));
   }
-  static long long touch_key(int a, int b)
+  // bodies a and b are kept apart by the touch (in use, and they do not touch): their
+  // cross-body pairs have no gap, in the pair loop and the correction alike
+  bool touch_apart(int a, int b) const { return touch_on_run && !touch_pair_on(a, b); }
+  // two ints in one 64-bit key (a in the high half) and back; touch_key() the pair of
+  // bodies in either order
+  static long long pack_key(int a, int b)
   {
-    if (a > b) std::swap(a, b);
     return (long long) (((unsigned long long) (unsigned) a << 32) | (unsigned) b);
   }
+  static void unpack_key(long long k, int &a, int &b)
+  {
+    a = (int) (unsigned) ((unsigned long long) k >> 32);
+    b = (int) (unsigned) ((unsigned long long) k & 0xffffffffULL);
+  }
+  static long long touch_key(int a, int b) { return (a < b) ? pack_key(a, b) : pack_key(b, a); }
   void store_bnd_gap(int);
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;

@@ -218,8 +218,8 @@ void PairESPHSolid::update_touch(int split)
   touch_pairs.clear();
   touch_bodies.clear();
   for (long long k : known) {
-    const int a = (int) (unsigned) ((unsigned long long) k >> 32);
-    const int b = (int) (unsigned) ((unsigned long long) k & 0xffffffffULL);
+    int a, b;
+    unpack_key(k, a, b);
     touch_bodies.push_back(a);
     touch_bodies.push_back(b);
     if (a != b) touch_pairs.push_back(k);

@@ -204,8 +204,7 @@ template <int HVAR> void PairESPHSolid::correction_loop(int iifrom, int iito, do
       // switched with them would kick the particles: there every neighbour counts
       double wgt = 1.0;
       if (cross && solid) {
-        const double gap = (touch_on_run && !touch_pair_on(bi, body[j])) ? GAP_NONE
-                                                                         : solid_gap(qi, qj, dt);
+        const double gap = touch_apart(bi, body[j]) ? GAP_NONE : solid_gap(qi, qj, dt);
         wgt = contact_pair_weight(gap, gap_cap, qi[Q_ENG], qj[Q_ENG]);
         if (wgt == 0.0) continue;
       }

@@ -336,8 +336,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           int touching;
           if (solid) {
             // (contact/gap touch: only bodies that touch each other)
-            const double gap =
-                (touch_on_run && !touch_pair_on(bi, body[j])) ? GAP_NONE : solid_gap(qi, qj, dt);
+            const double gap = touch_apart(bi, body[j]) ? GAP_NONE : solid_gap(qi, qj, dt);
             // touching: closed, or open by no more than round-off (faces that coincide in exact
             // arithmetic are a round-off distance apart in a rotated scene); counted before
             // the gate
