@@ -14,9 +14,12 @@
 #include "esph_state.h"
 
 #include "atom.h"
+#include "atom_vec.h"
 #include "error.h"
+#include "esph_contact.h"
 #include "modify.h"
 
+#include <algorithm>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -141,6 +144,25 @@ ESPHState::ESPHState(LAMMPS *_lmp) :
     lmp->error->all(FLERR, Error::NOLASTLINE, "ESPH per-atom state in fix {} is incomplete",
                     FIX_ID);
   fetch();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHState::clear_atom(int i)
+{
+  fetch();
+  const auto &created = lmp->atom->avec->fields_create;
+  if (rmass && std::find(created.begin(), created.end(), "rmass") == created.end()) rmass[i] = 0.0;
+  rho[i] = e[i] = h[i] = depth[i] = gapv[i] = eng[i] = 0.0;
+  gap[i] = ESPH::GAP_NONE;
+  body[i] = 0;
+  for (int k = 0; k < 6; k++) s[i][k] = 0.0;
+  for (int k = 0; k < 3; k++) n[i][k] = 0.0;
+  if (epsp) epsp[i] = 0.0;
+  if (alpha) alpha[i] = 0.0;
+  for (double **a : {drec, drecu, cone, coneu})
+    if (a)
+      for (int k = 0; k < 6; k++) a[i][k] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -85,6 +85,11 @@ class ESPHState {
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
   void fetch();
+  // a new atom (create_atoms, read_data add, fix deposit, ...): the state of a fresh box
+  // (fix property/atom zeroes only newly grown memory; a slot reused after a sort, an
+  // exchange or a deletion keeps the values of the atom that held it). The mass too where
+  // ESPH added it (the atom style's own rmass is set by the style)
+  void clear_atom(int i);
 
   double *rmass, *rho, *e, *h, **s, **n, *depth, *gap, *gapv, *eng;
   double *epsp;      // equivalent plastic strain, nullptr without plasticity

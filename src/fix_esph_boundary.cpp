@@ -115,6 +115,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr)
 {
   scalar_flag = 1;
+  create_attribute = 1;
   extscalar = 1;
   global_freq = 1;
 
@@ -200,6 +201,17 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix esph/boundary region sets the normals of the boundary particles it makes; "
                "with given they come with the particles (d2_esph_n): drop one of the two");
+}
+
+/* ----------------------------------------------------------------------
+   a new atom (create_atoms, read_data add, ...) starts with the ESPH state of
+   an atom in a fresh box (also without fix esph/integrate; the boundary
+   particles made here are set after)
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::set_arrays(int i)
+{
+  if (state) state->clear_atom(i);
 }
 
 /* ----------------------------------------------------------------------

@@ -33,6 +33,7 @@ class FixESPHBoundary : public Fix {
   FixESPHBoundary(class LAMMPS *, int, char **);
   ~FixESPHBoundary() override;
   void post_constructor() override;
+  void set_arrays(int) override;
   int setmask() override;
   void init() override;
   double compute_scalar() override;

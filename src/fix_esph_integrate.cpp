@@ -162,7 +162,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  for (int i = 0; i < atom->nlocal; i++) clear_pred(i);
 }
 
 /* ----------------------------------------------------------------------
@@ -1056,10 +1056,19 @@ void FixESPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 }
 
 /* ----------------------------------------------------------------------
-   a new atom (create_atoms, fix esph/boundary, read_data add) has no prediction
+   a new atom (create_atoms, fix esph/boundary, read_data add) has no
+   prediction, and the ESPH state of an atom in a fresh box
 ------------------------------------------------------------------------- */
 
 void FixESPHIntegrate::set_arrays(int i)
+{
+  clear_pred(i);
+  if (state) state->clear_atom(i);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixESPHIntegrate::clear_pred(int i)
 {
   for (int k = 0; k < NPRED; k++) pred[i][k] = 0.0;
   pred[i][P_HASH] = -1.0;    // fingerprints are >= 0

@@ -125,6 +125,7 @@ class FixESPHIntegrate : public Fix {
   void initial_integrate_staggered();
   void stagger_commit();
   void set_pred_from_state(int);
+  void clear_pred(int);
   void advance_state(int, double, int);
   void rotate_normal(double *, const double *);
   void check_group();
