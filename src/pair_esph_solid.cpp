@@ -315,23 +315,16 @@ void PairESPHSolid::init_recon()
 
 /* ----------------------------------------------------------------------
    the normal cones (contact/normal cone) in use: given, under contact
-   solid, without friction and rigid types (the pair loop has the cones
-   without them), in a scene with boundary particles and more than one
-   body, where a cross-body pair can occur. Decided at each run; elsewhere
-   their state (made by settings()) is kept but not used
+   solid, in a scene with boundary particles and more than one body, where
+   a cross-body pair can occur (with friction and rigid types too: their
+   variants of the pair loop have the cones). Decided at each run;
+   elsewhere their state (made by settings()) is kept but not used
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::init_cone()
 {
   cone_on = 0;
-  // the pair loop has the cones without friction and rigid types only
-  const int other = (friction > 0.0) || rigid_flag;
-  if (contact == CONTACT_SOLID && cone_flag && other && comm->me == 0)
-    error->warning(FLERR,
-                   "Pair esph/solid contact/normal cone is not available with {}: the common "
-                   "normal is the mean normal (contact/normal mean); drop contact/normal cone",
-                   friction > 0.0 ? "friction" : "rigid types");
-  if (contact == CONTACT_SOLID && cone_flag && !other) {
+  if (contact == CONTACT_SOLID && cone_flag) {
     int gmin, gmax, anybnd;
     body_range(gmin, gmax, anybnd);
     cone_on = anybnd && (gmin != gmax);

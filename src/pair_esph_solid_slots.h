@@ -75,7 +75,8 @@ static constexpr int EXTRA_XSPH = 2;
 static constexpr int EXTRA_FRICTION = 4;
 static constexpr int EXTRA_RIGID = 8;
 static constexpr int EXTRA_VISC = 16;    // visc/switch or visc/recon
-static constexpr int EXTRA_CONE = 32;    // contact/normal cone (without friction or rigid types)
+static constexpr int EXTRA_CONE = 32;    // contact/normal cone alone (the friction and rigid
+                                         // variants have the cones at run time)
 // the friction of a pair never exceeds the force that would stop the pair's slip within
 // 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
 static constexpr double STICK_SHARE = 32.0;

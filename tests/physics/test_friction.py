@@ -11,7 +11,13 @@
 4. np 1 and np 2 give the same answer to round-off.
 5. A block sliding obliquely onto a rigid plate (pair_coeff ... rigid yes): the friction work
    all goes into the block (the rigid plate has no internal energy): total energy kept
-   (before: the plate's half was lost, -14 % at mu 0.3, found by a user-scene sweep)."""
+   (before: the plate's half was lost, -14 % at mu 0.3, found by a user-scene sweep).
+6. The normal cones (contact/normal cone) with friction and rigid types (before 2026-12-06
+   they were switched off there, with a warning): the block of 5 onto the plate, and a small
+   block hitting the face of a rigid wall that slides at 100 m/s (fix move), frictionless:
+   the block's edges tilt the mean normal (tangential impulse where frictionless physics has
+   none), the cones do not; with mu 0.3 the friction impulse stays within Coulomb's mu;
+   np 2 = np 1."""
 import os
 import shutil
 
@@ -104,6 +110,7 @@ c.less("np 1 vs np 2 with friction: worst thermo difference (relative)", worst, 
 RIGID_SLIDE = """
 variable mu index 0.3
 variable rigid index yes
+variable pextra index ""
 variable d equal 2e-4
 units si
 atom_style atomic
@@ -118,7 +125,7 @@ create_atoms 1 region ra
 create_atoms 2 region rb
 group A region ra
 group B region rb
-pair_style esph/solid $(1.3*v_d) friction ${mu}
+pair_style esph/solid $(1.3*v_d) friction ${mu} ${pextra}
 pair_coeff 1 1 rho0 7850 shear 80.0e9 eos linear 160e9
 pair_coeff 2 2 rho0 7850 shear 80.0e9 eos linear 160e9 rigid ${rigid}
 set group all mass $(7850*v_d^3)
@@ -159,4 +166,87 @@ for rigid in ("yes", "no"):
         c.near("rigid plate: |J_t|/|J_n|", s["mu_eff"], 0.3, 0.02,
                "Coulomb law while slipping (the frictionless block's lattice edges give 0.014; "
                "measured 0.295)")
+
+# ---------- 6. the normal cones with friction and rigid types ----------
+CONE = "contact/normal cone"
+cone = {}
+for rigid, mu in (("yes", 0.0), ("yes", 0.3), ("no", 0.3)):
+    for pe in ("", CONE):
+        s = et.summary(et.run(a, rs, {"rigid": rigid, "mu": mu, "pextra": pe},
+                              log=f"log.cone_{rigid}_{mu}_{'cone' if pe else 'mean'}"),
+                       "RIGID_SLIDE")
+        cone[(rigid, mu, bool(pe))] = s
+        print(f"INFO plate rigid {rigid}, mu {mu}, {'cone' if pe else 'mean'}: {s}")
+c.less("rigid plate, frictionless, cone: |J_t|/|J_n|", cone[("yes", 0.0, True)]["mu_eff"],
+       0.003, f"no friction: the mean normal's lattice edges give "
+       f"{cone[('yes', 0.0, False)]['mu_eff']:.4f}; measured 8.2e-4 with the cones")
+for rigid in ("yes", "no"):
+    s = cone[(rigid, 0.3, True)]
+    c.less(f"plate rigid {rigid}, mu 0.3, cone: |J_t|/|J_n| within Coulomb's mu", s["mu_eff"],
+           0.3 + 0.003, f"friction never exceeds mu |f_n| (the mean normal: "
+           f"{cone[(rigid, 0.3, False)]['mu_eff']:.3f}, its edges' tilt added to friction; "
+           "measured 0.262 rigid / 0.281 deformable with the cones)")
+    c.less(f"plate rigid {rigid}, mu 0.3, cone: |energy drift| [%]", abs(s["edrift_pct"]), 0.1,
+           "the friction work is heat in the bodies")
+s1 = et.run(a, rs, {"rigid": "yes", "mu": 0.3, "pextra": CONE}, log="log.cone_np1")
+s2 = et.run(a, rs, {"rigid": "yes", "mu": 0.3, "pextra": CONE}, np=2, log="log.cone_np2")
+wd, wcol = et.worst_difference(et.thermo(s1)[-1], et.thermo(s2)[-1])
+c.less(f"rigid plate, mu 0.3, cone: np 2 vs np 1, worst thermo difference (relative, {wcol})",
+       wd, 1e-10, "round-off")
+
+WALL = """
+variable pextra index ""
+variable h equal 2e-4
+units si
+atom_style atomic
+atom_modify map array
+boundary f f f
+region box block -3e-3 3e-3 -5e-3 5e-3 -3e-3 3e-3
+create_box 2 box
+lattice sc ${h} origin 0.5 0.5 0.5
+region rw block -0.6e-3 0.6e-3 -2.2e-3 2.2e-3 -0.6e-3 0.6e-3 units box
+region ra block 1.0e-3 1.8e-3 -0.2e-3 0.2e-3 -0.2e-3 0.2e-3 units box
+create_atoms 2 region rw
+create_atoms 1 region ra
+group W type 2
+group A type 1
+pair_style esph/solid ${h} ${pextra}
+pair_coeff 1 1 rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69
+pair_coeff 2 2 rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69 rigid yes
+timestep 1e-8
+set group all mass $(7850*v_h^3)
+set group W i_esph_body 2
+set group A i_esph_body 1
+fix bnd all esph/boundary spacing ${h}
+variable massive atom mass>0.0
+group real variable massive
+group rA intersect A real
+fix int A esph/integrate
+fix mv W move linear 0 100 0 units box
+velocity rA set -50 0 0 units box
+compute va rA reduce ave vx vy vz
+compute keA rA ke
+variable eA equal c_keA+pe
+thermo_style custom step c_keA pe c_va[1] c_va[2]
+thermo 100
+run 0 post no
+variable e0 equal $(v_eA)
+run 1000
+print "SLIDING_WALL vx=$(c_va[1]:%.6f) vy=$(c_va[2]:%.6f) vz=$(c_va[3]:%.3e) de_rel=$((v_eA-v_e0)/v_e0:%.6e)"
+"""
+wi = et.write_input(a, "in.sliding_wall", WALL)
+wm = et.summary(et.run(a, wi, {"pextra": ""}, log="log.wall_mean"), "SLIDING_WALL")
+wc = et.summary(et.run(a, wi, {"pextra": CONE}, log="log.wall_cone"), "SLIDING_WALL")
+print(f"INFO block (4 x 2 x 2) on a rigid wall sliding at 100 m/s, frictionless: mean {wm}, "
+      f"cone {wc}")
+c.less("rigid wall sliding at 100 m/s, frictionless, cone: block's sideways speed [m/s]",
+       abs(wc["vy"]), 1.0,
+       f"a frictionless wall does not drag (the mean normal: {wm['vy']:.1f} m/s; measured "
+       "0.50 with the cones)")
+# the wall moves along y at 100 m/s: its work on the block is 100 m/s times the sideways
+# impulse, i.e. (relative to the block's 0.5 m 50^2) 100 v_y / 1250
+c.less("rigid wall sliding, cone: the block's energy change (relative)", abs(wc["de_rel"]),
+       0.1, "the wall's work 100 m/s x the block's sideways impulse, 100 v_y / 1250 = "
+       f"{100 * wc['vy'] / 1250:.3f} (measured +0.043; the mean normal: "
+       f"{wm['de_rel']:+.2f}, three times the block's energy)")
 c.done()
