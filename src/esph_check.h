@@ -52,8 +52,10 @@ namespace ESPHCheck {
   std::vector<int> global_set(LAMMPS *lmp, std::vector<int> v);
   std::vector<long long> global_set(LAMMPS *lmp, std::vector<long long> v);
 
-  // number of real (mass > 0) particles per body among the atoms in groupbit, all ranks
-  std::map<int, bigint> body_counts(LAMMPS *lmp, ESPHState *state, int groupbit);
+  // number of real (mass > 0) particles per body among the atoms in groupbit, all ranks;
+  // with boundary, of the boundary (zero-mass) particles
+  std::map<int, bigint> body_counts(LAMMPS *lmp, ESPHState *state, int groupbit,
+                                    bool boundary = false);
   // "1: 64, 2: 64" (the first few bodies)
   std::string format_bodies(const std::map<int, bigint> &counts);
 
@@ -89,6 +91,10 @@ namespace ESPHCheck {
   // esph/integrate: nothing updates their density, stress and energy (said in the log);
   // those and rigid ones with a velocity that no fix applies (a warning each)
   void unintegrated(LAMMPS *lmp, ESPHState *state, Fix *fix_int, const int *rigid);
+
+  // a fix that changes positions or velocities of real particles after fix esph/integrate
+  // predicted the step (post_integrate, e.g. fix wall/reflect): warned, naming it
+  void after_prediction(LAMMPS *lmp, ESPHState *state, Fix *fix_int);
 
   // median distance from each real particle of the group to its nearest real
   // neighbour of the same body, in units of spacing (capped at MAX_RATIO); -1 if the

@@ -20,6 +20,7 @@
 #include "esph_bodies.h"
 #include "esph_check.h"
 #include "esph_state.h"
+#include "force.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,4 +100,79 @@ void ESPHSpinWatch::step(LAMMPS *lmp, ESPHState *state, int groupbit, bigint nti
     }
   }
   hit.clear();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHEnergyWatch::sums(LAMMPS *lmp, ESPHState *state, int groupbit,
+                           std::vector<double> &out) const
+{
+  const int nb = bodies.size();
+  std::vector<double> mine(2 * nb, 0.0);
+  const int *mask = lmp->atom->mask;
+  double **v = lmp->atom->v;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !(state->rmass[i] > 0.0)) continue;
+    const auto it = std::lower_bound(bodies.begin(), bodies.end(), state->body[i]);
+    if (it == bodies.end() || *it != state->body[i]) continue;
+    const int k = it - bodies.begin();
+    const double m = state->rmass[i];
+    mine[2 * k] += 0.5 * m * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    mine[2 * k + 1] += m * state->e[i];
+  }
+  out.assign(2 * nb, 0.0);
+  MPI_Allreduce(mine.data(), out.data(), 2 * nb, MPI_DOUBLE, MPI_SUM, lmp->world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHEnergyWatch::setup(LAMMPS *lmp, ESPHState *state, int groupbit)
+{
+  bodies.clear();
+  state->fetch();
+  if (state->body)
+    for (const auto &kv : ESPHCheck::body_counts(lmp, state, groupbit)) bodies.push_back(kv.first);
+  std::vector<double> s;
+  sums(lmp, state, groupbit, s);
+  const int nb = bodies.size();
+  floor_.assign(nb, 0.0);
+  scale.assign(nb, 0.0);
+  for (int k = 0; k < nb; k++) {
+    floor_[k] = std::min(0.0, s[2 * k + 1]);
+    scale[k] = s[2 * k] + fabs(s[2 * k + 1]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ESPHEnergyWatch::step(LAMMPS *lmp, ESPHState *state, int groupbit, bigint ntimestep,
+                           const char *fixid)
+{
+  if (ntimestep % SAMPLE != 0 || bodies.empty()) return;
+  state->fetch();
+  std::vector<double> s;
+  sums(lmp, state, groupbit, s);
+  const int nb = bodies.size();
+  double all = 0.0;
+  for (int k = 0; k < nb; k++) {
+    scale[k] = std::max(scale[k], s[2 * k] + fabs(s[2 * k + 1]));
+    all += s[2 * k] + fabs(s[2 * k + 1]);
+  }
+  for (int k = 0; k < nb; k++) {
+    const double ref = std::max(scale[k], 1.0e-6 * all);
+    const double eint = s[2 * k + 1];
+    if (!(ref > 0.0) || eint >= floor_[k] - TOL * ref || warned.count(bodies[k])) continue;
+    warned.insert(bodies[k]);
+    const double mvv2e = lmp->force->mvv2e;
+    if (lmp->comm->me == 0)
+      lmp->error->warning(
+          FLERR,
+          "Fix esph/integrate {}: body {} has a negative internal energy at step {} ({:.4g}, "
+          "{:.3g} of the largest energy it had; its kinetic energy {:.4g}): a body's elastic "
+          "energy and heat cannot be negative, so forces are creating energy, an instability. "
+          "A body a few particles across under pair_style esph/solid gradient corrected (the "
+          "default) or plain: use gradient torquefree or bonet/lok, or more particles across; "
+          "otherwise a smaller time step (fix esph/integrate cfl)",
+          fixid, bodies[k], ntimestep, eint * mvv2e, (floor_[k] - eint) / ref, s[2 * k] * mvv2e);
+  }
 }

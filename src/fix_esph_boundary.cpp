@@ -222,7 +222,10 @@ void FixESPHBoundary::set_arrays(int i)
 void FixESPHBoundary::post_constructor()
 {
   state = new ESPHState(lmp);
-  if (mode != GENERATE) return;
+  if (mode != GENERATE) {
+    bnd_for = ESPHCheck::body_counts(lmp, state, groupbit, true);
+    return;
+  }
 
   state->fetch();
   // zero-mass particles in the group are taken as existing boundary particles (after
@@ -272,6 +275,7 @@ void FixESPHBoundary::post_constructor()
   generate();
   // what the boundary particles are for: later changes of the bodies are caught in init()
   made_for = ESPHCheck::body_counts(lmp, state, groupbit);
+  bnd_for = ESPHCheck::body_counts(lmp, state, groupbit, true);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -362,6 +366,24 @@ void FixESPHBoundary::init()
       error->all(FLERR, Error::NOLASTLINE,
                  "Fix esph/boundary has boundary particles of body {} which has no real particles",
                  b);
+  // a body that keeps real particles keeps all of its boundary particles: one deleted or
+  // lost leaves a hole in its surface, through which other bodies pass unseen
+  {
+    const auto bnow = ESPHCheck::body_counts(lmp, state, groupbit, true);
+    const auto rnow = ESPHCheck::body_counts(lmp, state, groupbit);
+    for (const auto &kv : bnd_for) {
+      const auto b = bnow.find(kv.first);
+      const bigint have = (b == bnow.end()) ? 0 : b->second;
+      if (have >= kv.second || rnow.find(kv.first) == rnow.end()) continue;
+      error->all(FLERR, Error::NOLASTLINE,
+                 "Fix esph/boundary {}: body {} has {} of the {} boundary particles it had when "
+                 "the fix was defined: boundary particles were deleted or lost (delete_atoms?), "
+                 "and its surface has holes there, through which other bodies pass. Delete all "
+                 "boundary particles (a group of the zero-mass particles, delete_atoms), then "
+                 "define fix esph/boundary again (unfix, then fix) to make them anew",
+                 id, kv.first, have, kv.second);
+    }
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -54,6 +54,8 @@ class FixESPHBoundary : public Fix {
   class ESPHState *state;
   // real particles per body the boundary particles were generated (or found) for
   std::map<int, bigint> made_for;
+  // the boundary particles per body when the fix was defined (made or found)
+  std::map<int, bigint> bnd_for;
   bigint reused;    // boundary particles found at the definition and used (none made)
   // regions whose surfaces give the normals of the boundary particles of their bodies
   std::vector<std::string> region_ids;

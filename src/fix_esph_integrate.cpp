@@ -335,6 +335,7 @@ void FixESPHIntegrate::setup(int /*vflag*/)
        pair->correct_flag == PairESPHSolid::CORRECT_RATE) &&
       !other_torques();
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
+  energy_watch.setup(lmp, state, groupbit);
   // (positions may have been changed between runs: the motion check starts afresh)
   moved_step = -1;
   moved_then.clear();
@@ -816,6 +817,7 @@ void FixESPHIntegrate::final_integrate()
   // an impact compresses a stiffening material), every FIXED_DT_CHECK steps
   if (cfl <= 0.0 && update->ntimestep % FIXED_DT_CHECK == 0) check_fixed_dt();
   check_moved_velocities();
+  energy_watch.step(lmp, state, groupbit, update->ntimestep, id);
 }
 
 /* ----------------------------------------------------------------------

@@ -99,8 +99,9 @@ class FixESPHIntegrate : public Fix {
   double dtmin, dtmax;                // bounds of the adaptive step
   ESPH::ContactRecord contact_all;    // contact history of all bodies together
   void update_body_pairs(double t, int setup = 0);
-  ESPHSpinWatch spin_watch;    // angular momentum of free bodies (gradient corrected, plain)
-  int spin_watch_on;           // watched in this run
+  ESPHSpinWatch spin_watch;        // angular momentum of free bodies (gradient corrected, plain)
+  int spin_watch_on;               // watched in this run
+  ESPHEnergyWatch energy_watch;    // internal energy of every body (every run)
   void contact_tallies(double *total);
   int havepred;        // pred holds the prediction of a completed step
   bigint fp_natoms;    // number of atoms when the fingerprints were stored

@@ -102,6 +102,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
 
 void PairESPHSolid::init_style()
 {
+  one_seen.assign((atom->ntypes + 1) * (atom->ntypes + 1), 0);
   // the conversion is generic (esph_units.h), but only these unit styles are tested
   const std::string ustyle = update->unit_style;
   if (ustyle != "si" && ustyle != "metal" && ustyle != "real" && ustyle != "cgs" &&
@@ -156,6 +157,7 @@ void PairESPHSolid::init_style()
                "(contact solid or paper), not contact off");
   if (rigid_flag) ESPHCheck::rigid_bodies(lmp, state, fix_int, rigid);
   ESPHCheck::unintegrated(lmp, state, fix_int, rigid);
+  ESPHCheck::after_prediction(lmp, state, fix_int);
   if (contact != CONTACT_OFF && !boundary_fix()) {
     // contact needs boundary particles only when there is more than one body
     int gmin, gmax, anybnd;
@@ -398,7 +400,40 @@ double PairESPHSolid::init_one(int i, int j)
                "All pair esph/solid materials are not set (use pair_coeff I I rho0 ... for every "
                "type). Status:\n" +
                    Info::get_pair_coeff_status(lmp));
+  if ((int) one_seen.size() == (atom->ntypes + 1) * (atom->ntypes + 1))
+    one_seen[i * (atom->ntypes + 1) + j] = one_seen[j * (atom->ntypes + 1) + i] = 1;
   return cut_global;
+}
+
+/* ----------------------------------------------------------------------
+   under pair_style hybrid: two types that are both materials of this style
+   (pair_coeff I I ... esph/solid) whose pairs another sub-style was given
+   (e.g. pair_coeff 1 2 zero) do not meet through this style: no contact
+   between their bodies, no cohesion in a body of both. Legal, hardly meant:
+   a warning, once
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::check_hybrid()
+{
+  if (hybrid_warned || force->pair == this) return;
+  const int nt = atom->ntypes;
+  if ((int) one_seen.size() != (nt + 1) * (nt + 1)) return;
+  std::string pairs;
+  int npairs = 0;
+  for (int i = 1; i <= nt; i++)
+    for (int j = i; j <= nt; j++)
+      if (setflag[i][i] && setflag[j][j] && !one_seen[i * (nt + 1) + j]) {
+        if (npairs++ < 8) pairs += fmt::format("{}{} {}", npairs > 1 ? ", " : "", i, j);
+      }
+  if (npairs && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid under pair_style {}: types {}{} are esph/solid materials but "
+                   "their pairs are given to another sub-style, so their particles do not meet "
+                   "through esph/solid (bodies pass through each other, a body of both types "
+                   "falls apart): give those pairs to esph/solid (pair_coeff I J esph/solid, or "
+                   "no pair_coeff for them) or use pair_style hybrid/overlay",
+                   force->pair_style, pairs, npairs > 8 ? ", ..." : "");
+  hybrid_warned = 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -414,6 +449,7 @@ double PairESPHSolid::init_one(int i, int j)
 
 void PairESPHSolid::setup()
 {
+  check_hybrid();
   // (resume_check() restores the time step of the last computation for the gap forecast)
   pred_valid = fix_int->resume_check();
   normals_valid = pred_valid;
@@ -805,6 +841,7 @@ void PairESPHSolid::pair_pass(int bnd)
   ncontact_pairs = out.ncontact;
   ntouch_pairs = out.ntouch;
   fcontact = out.fcontact;
+  dt_cfl = std::min(dt_cfl, out.dtcross);
 }
 
 /* ----------------------------------------------------------------------

@@ -88,6 +88,10 @@ class PairESPHSolid : public Pair {
   // (cfl 0.3, two blocks at 50 m/s, 1000 steps: alpha 3 +0.28 % energy, 5 +94 %, 10 lost
   // atoms; with the factor +0.06 / +0.07 / +0.10 %, alpha 20 +0.12 %; alpha 1-2 unchanged)
   static constexpr double VISC_CFL_ALPHA = 2.5;
+  // a light particle against a heavy one of another body: its interface stiffness is the
+  // heavy body's, on its own small mass; the step of the pair is visc_cfl h_l / (CROSS_DT_K
+  // c_L,heavy sqrt(m_heavy / m_light) + |v_l|) (measured: cross_dt())
+  static constexpr double CROSS_DT_K = 0.6;
   int vswitch_flag;      // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
   double vswitch_min;    // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;      // its decay constant l: tau_i = h_i / (l c_i)
@@ -96,7 +100,12 @@ class PairESPHSolid : public Pair {
                          // no real particle is of a deformable type without a yield stress
   int recon_given;       // visc/recon was given (not the default)
   int recon_warned;      // the warning that visc/recon has no effect was given
-  int heat_flag;         // artificial heat transfer (eqs. 8-10)
+  // the type pairs this style was given by init_one() in this run's init (under pair_style
+  // hybrid only those mapped to it), flat (ntypes + 1)^2; hybrid_warned: said once
+  std::vector<char> one_seen;
+  int hybrid_warned;
+  void check_hybrid();
+  int heat_flag;    // artificial heat transfer (eqs. 8-10)
   double g1, g2;
   int hvar_flag;        // variable smoothing length (eq. 24)
   double hmax;          // allowed growth of h (cutoff factor)
@@ -238,7 +247,11 @@ class PairESPHSolid : public Pair {
     BodyTally *tally;
     int ncontact, ntouch;
     double fcontact;
+    // the time step the pairs of real particles of different bodies allow (cross_dt())
+    double dtcross = 1.0e300;
   };
+  // the step a pair of real particles of different bodies and masses allows, into dtmin
+  void cross_dt(int i, int j, double mi, double mj, double &dtmin) const;
 
   virtual void allocate();
   void set_defaults();

@@ -218,9 +218,17 @@ template <int HVAR> void PairESPHSolid::correction_loop(int iifrom, int iito, do
       if (!kernel_eval(kernel, dim, norm, hinv, sqrt(rsq), w, dw)) continue;
       dw *= wgt;
       const double g[3] = {dw * dx[0], dw * dx[1], dw * dx[2]};    // grad_i W_ij
+      // across bodies of different materials the volume weights of the pair loop (w_j =
+      // rho0_i m_j / rho0_j): the corrected forces s_i B_i + s_j B_j there balance the
+      // torques of these sums
+      double wj = mj, wi = mi;
+      if (cross && !(ri || rj) && eos[type[i]].rho0 != eos[type[j]].rho0) {
+        wj = eos[type[i]].rho0 / eos[type[j]].rho0 * mj;
+        wi = eos[type[j]].rho0 / eos[type[i]].rho0 * mi;
+      }
       // x_j - x_i = -dx for i; x_i - x_j = dx and grad_j W = -g for j
-      add_outer(mci, -mj, dx, g);
-      if (newton_pair || j < nlocal) add_outer(acc[j] + A_M, -mi, dx, g);
+      add_outer(mci, -wj, dx, g);
+      if (newton_pair || j < nlocal) add_outer(acc[j] + A_M, -wi, dx, g);
     }
     double *ai = acc[i] + A_M;
     for (int k = 0; k < 9; k++) ai[k] += mci[k];

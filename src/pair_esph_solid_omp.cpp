@@ -217,6 +217,7 @@ void PairESPHSolidOMP::pair_pass(int bnd)
         t.ncontact = out.ncontact;
         t.ntouch = out.ntouch;
         t.fcontact = out.fcontact;
+        t.dtcross = out.dtcross;
       },
       [&](int k, const double *r) {
         combine_acc_row(acc[k], r, 0, ncol, rmass[k] == 0.0);
@@ -236,6 +237,7 @@ void PairESPHSolidOMP::pair_pass(int bnd)
     ncontact_pairs += t.ncontact;
     ntouch_pairs += t.ntouch;
     fcontact += t.fcontact;
+    dt_cfl = std::min(dt_cfl, t.dtcross);
     for (const auto &kv : t.tally) {
       auto &b = tally_bodies(body_tally, kv.first.first, kv.first.second);
       for (int k = 0; k < NTALLY; k++) b[k] += kv.second[k];

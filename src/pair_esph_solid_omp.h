@@ -52,7 +52,7 @@ class PairESPHSolidOMP : public PairESPHSolid {
     std::vector<double> priv;    // private rows, PRIV_STRIDE each
     BodyTally tally;
     int ncontact, ntouch;
-    double fcontact;
+    double fcontact, dtcross;
   };
   std::vector<Thread> thr;
   // what the rows were built for: neighbour list build, atom counts, array addresses

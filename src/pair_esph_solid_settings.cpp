@@ -58,6 +58,7 @@ void PairESPHSolid::set_defaults()
   recon_flag = RECON_OFF;
   recon_given = 0;
   recon_warned = 0;
+  hybrid_warned = 0;
   heat_flag = 0;
   g1 = g2 = 0.0;
   hvar_flag = 0;

@@ -690,6 +690,34 @@ CASES = [
     ("rs_delete_atoms",
      [A("run", "delete_atoms group a compress no"), A("run", "run 5")],
      "error:define it again (unfix, then fix)"),
+    # some boundary particles deleted while their body keeps its real particles: holes in
+    # its surface (16 of a rod's end face deleted: the contact came 0.9 us late, no message)
+    ("bf_delete_some_boundary",
+     [A("run", "variable zb atom (mass==0.0)&&(i_esph_body==1)&&(x>-0.00005)"),
+      A("run", "group zb variable zb"), A("run", "delete_atoms group zb compress no"),
+      A("run", "run 5")], "error:boundary particles were deleted or lost"),
+    ("bf_delete_some_boundary_np2",
+     [A("run", "variable zb atom (mass==0.0)&&(i_esph_body==1)&&(x>-0.00005)"),
+      A("run", "group zb variable zb"), A("run", "delete_atoms group zb compress no"),
+      A("run", "run 5")], "error:boundary particles were deleted or lost", 2),
+    # a whole body deleted, its boundary particles with it, the fix defined again: runs
+    ("bf_delete_body_refix",
+     [A("run", "delete_atoms group b compress no"), A("run", "unfix bnd"),
+      A("run", FB + "spacing 1e-4"), A("run", "run 5")], "runs"),
+    # pair_style hybrid: the pairs of two esph/solid types given to another sub-style
+    # (bodies passed through each other without a message)
+    ("ps_hybrid_cross_zero",
+     [R("pair", "pair_style hybrid esph/solid 1.3e-4 zero 1.3e-4"),
+      R("coeff", "pair_coeff * * esph/solid rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 "
+                 "1.69"), A("coeff", "pair_coeff 1 2 zero")],
+     "warning:their pairs are given to another sub-style"),
+    ("ps_hybrid_overlay_zero",
+     [R("pair", "pair_style hybrid/overlay esph/solid 1.3e-4 zero 1.3e-4"),
+      R("coeff", "pair_coeff * * esph/solid rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 "
+                 "1.69"), A("coeff", "pair_coeff * * zero")], "same"),
+    # a fix that moves particles after fix esph/integrate's prediction (post_integrate)
+    ("fi_wall_reflect", [A("fix_int", "fix wr all wall/reflect xhi EDGE")],
+     "warning:changes positions or velocities of ESPH particles"),
     ("bf_single_particle_body",
      [R("ra", "region ra block -0.0001 0 0 0.0001 0 0.0001 units box")],
      "error:a single particle has no surface"),
