@@ -250,8 +250,8 @@ class PairESPHSolid : public Pair {
     // the time step the pairs of real particles of different bodies allow (cross_dt())
     double dtcross = 1.0e300;
   };
-  // the step a pair of real particles of different bodies and masses allows, into dtmin
-  void cross_dt(int i, int j, double mi, double mj, double &dtmin) const;
+  // the step a pair of real particles of different bodies and masses allows
+  double cross_dt(int i, int j, double mi, double mj) const;
 
   virtual void allocate();
   void set_defaults();

@@ -52,6 +52,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   BodyTally &tally = *out.tally;
   int ncontact = 0, ntouch = 0;
   double fcont = 0.0;
+  double dtcross = BIG_DT;    // the step the pairs across bodies allow (cross_dt())
   const tagint *tag = atom->tag;
   const double *rmass = state->rmass;
   const int *body = state->body;
@@ -247,15 +248,17 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         // rate, a stiffness the time step does not see (iron on a foam 78 times lighter
         // gained 400 times its energy). One material: s = 1, the paper's sums exactly
         double wj = mj, wi = mi, si = 1.0, sj = 1.0;
+        int vol = 0;
         if (cross && !(ri || rj)) {
           const double r0i = eos[type[i]].rho0, r0j = eos[type[j]].rho0;
           if (r0i != r0j) {
+            vol = 1;
             si = r0i / r0j;
             sj = r0j / r0i;
             wj = si * mj;
             wi = sj * mi;
           }
-          if (mi != mj) cross_dt(i, j, mi, mj, out.dtcross);
+          if (mi != mj) dtcross = std::min(dtcross, cross_dt(i, j, mi, mj));
         }
         const double *qa = ri ? qj : qi;
         const double *qb = rj ? qi : qj;
@@ -266,16 +269,22 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         if (CORR == 2) {
           const double *Bi = qa + qcol_b;
           const double *Bj = qb + qcol_b;
-          for (int r = 0; r < 3; r++)
-            Tg[r] = (si * Bi[3 * r] + sj * Bj[3 * r]) * g[0] +
-                (si * Bi[3 * r + 1] + sj * Bj[3 * r + 1]) * g[1] +
-                (si * Bi[3 * r + 2] + sj * Bj[3 * r + 2]) * g[2];
+          if (vol)
+            for (int r = 0; r < 3; r++)
+              Tg[r] = (si * Bi[3 * r] + sj * Bj[3 * r]) * g[0] +
+                  (si * Bi[3 * r + 1] + sj * Bj[3 * r + 1]) * g[1] +
+                  (si * Bi[3 * r + 2] + sj * Bj[3 * r + 2]) * g[2];
+          else
+            for (int r = 0; r < 3; r++)
+              Tg[r] = (Bi[3 * r] + Bj[3 * r]) * g[0] + (Bi[3 * r + 1] + Bj[3 * r + 1]) * g[1] +
+                  (Bi[3 * r + 2] + Bj[3 * r + 2]) * g[2];
         } else {
           const double *Ai = qa + Q_A;
           const double *Aj = qb + Q_A;
-          const double T[6] = {si * Ai[0] + sj * Aj[0], si * Ai[1] + sj * Aj[1],
-                               si * Ai[2] + sj * Aj[2], si * Ai[3] + sj * Aj[3],
-                               si * Ai[4] + sj * Aj[4], si * Ai[5] + sj * Aj[5]};
+          double T[6] = {Ai[0] + Aj[0], Ai[1] + Aj[1], Ai[2] + Aj[2],
+                         Ai[3] + Aj[3], Ai[4] + Aj[4], Ai[5] + Aj[5]};
+          if (vol)
+            for (int k = 0; k < 6; k++) T[k] = si * Ai[k] + sj * Aj[k];
           Tg[0] = T[0] * g[0] + T[3] * g[1] + T[4] * g[2];
           Tg[1] = T[3] * g[0] + T[1] * g[1] + T[5] * g[2];
           Tg[2] = T[4] * g[0] + T[5] * g[1] + T[2] * g[2];
@@ -525,6 +534,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
     }
   }
   out.ncontact += ncontact;
+  out.dtcross = std::min(out.dtcross, dtcross);
   out.ntouch += ntouch;
   out.fcontact += fcont;
 }
@@ -544,7 +554,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
    step is the smaller
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::cross_dt(int i, int j, double mi, double mj, double &dtmin) const
+double PairESPHSolid::cross_dt(int i, int j, double mi, double mj) const
 {
   const int l = (mi < mj) ? i : j, hv = (mi < mj) ? j : i;
   const double *ql = hq[l], *qh = hq[hv];
@@ -553,7 +563,7 @@ void PairESPHSolid::cross_dt(int i, int j, double mi, double mj, double &dtmin) 
   const double ceff = CROSS_DT_K * clh * sqrt(std::max(mi, mj) / std::min(mi, mj));
   const double vl = sqrt(ql[Q_V] * ql[Q_V] + ql[Q_V + 1] * ql[Q_V + 1] + ql[Q_V + 2] * ql[Q_V + 2]);
   const double visc_cfl = (alpha > VISC_CFL_ALPHA) ? VISC_CFL_ALPHA / alpha : 1.0;
-  dtmin = std::min(dtmin, visc_cfl * ql[Q_H] / (ceff + vl));
+  return visc_cfl * ql[Q_H] / (ceff + vl);
 }
 
 /* ----------------------------------------------------------------------
