@@ -429,7 +429,10 @@ void PairESPHSolid::pair_loop(LoopOut &out)
             const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
             if (vt2 > 0.0) {
               const double vtm = sqrt(vt2);
-              const double fstick = mm / (mi + mj) * vtm / (STICK_SHARE * dt);
+              // (the pair's reduced mass; against a rigid particle, which does not move,
+              // the deformable one's mass)
+              const double mred = (RIG && (ri || rj)) ? (ri ? mj : mi) * fconv : mm / (mi + mj);
+              const double fstick = mred * vtm / (STICK_SHARE * dt);
               const double ft = std::min(-friction * fn, fstick);
               const double s = ft / vtm;
               for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
