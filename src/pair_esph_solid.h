@@ -27,6 +27,7 @@ PairStyle(esph/solid,PairESPHSolid);
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -252,6 +253,25 @@ class PairESPHSolid : public Pair {
   };
   // the step a pair of real particles of different bodies and masses allows
   double cross_dt(int i, int j, double mi, double mj) const;
+  // the longitudinal wave speed of the CFL estimate, from the squared bulk sound speed c2
+  // and the density (internal units) of a particle of type t
+  double long_speed(double c2, double rho, int t) const
+  {
+    return std::sqrt(c2 + 4.0 * shear[t] * units.pressure_in / (3.0 * rho));
+  }
+  // the viscous limit of the CFL estimate (alpha is the switch's ceiling with visc/switch)
+  double visc_cfl_factor() const { return (alpha > VISC_CFL_ALPHA) ? VISC_CFL_ALPHA / alpha : 1.0; }
+  // across bodies of materials of different reference densities the sums weigh the partner
+  // by its volume: s_i = rho0_i / rho0_j, s_j = 1 / s_i (pair loop and correction pass
+  // alike); false, and s = 1, for one rho0
+  bool volume_ratio(int ti, int tj, double &si, double &sj) const
+  {
+    const double r0i = eos[ti].rho0, r0j = eos[tj].rho0;
+    if (r0i == r0j) return false;
+    si = r0i / r0j;
+    sj = r0j / r0i;
+    return true;
+  }
 
   virtual void allocate();
   void set_defaults();

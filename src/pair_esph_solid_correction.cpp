@@ -62,7 +62,6 @@ void PairESPHSolid::correction()
   const int nall = nlocal + atom->nghost;
   const double *rmass = state->rmass;
   const int *type = atom->type;
-  const double pin = units.pressure_in;
   // per chunk of atoms: the smallest time step
   std::vector<double> dtmin(nthreads, dt_cfl);
   double *const dtmin_t = dtmin.data();
@@ -93,7 +92,7 @@ void PairESPHSolid::correction()
           const double sqrt_kappa = sqrt(sqrt(std::max(es.eigenvalues()(2), 0.0)));
           if (sqrt_kappa > 1.0) {
             const double rho = q[Q_RHO];
-            const double cl = sqrt(q[Q_C] * q[Q_C] + 4.0 * shear[type[i]] * pin / (3.0 * rho));
+            const double cl = long_speed(q[Q_C] * q[Q_C], rho, type[i]);
             const double *v = q + Q_V;
             const double vmag = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
             dtl = std::min(dtl, q[Q_H] / (cl * sqrt_kappa + vmag));
@@ -221,10 +220,10 @@ template <int HVAR> void PairESPHSolid::correction_loop(int iifrom, int iito, do
       // across bodies of different materials the volume weights of the pair loop (w_j =
       // rho0_i m_j / rho0_j): the corrected forces s_i B_i + s_j B_j there balance the
       // torques of these sums
-      double wj = mj, wi = mi;
-      if (cross && !(ri || rj) && eos[type[i]].rho0 != eos[type[j]].rho0) {
-        wj = eos[type[i]].rho0 / eos[type[j]].rho0 * mj;
-        wi = eos[type[j]].rho0 / eos[type[i]].rho0 * mi;
+      double wj = mj, wi = mi, si, sj;
+      if (cross && !(ri || rj) && volume_ratio(type[i], type[j], si, sj)) {
+        wj = si * mj;
+        wi = sj * mi;
       }
       // x_j - x_i = -dx for i; x_i - x_j = dx and grad_j W = -g for j
       add_outer(mci, -wj, dx, g);

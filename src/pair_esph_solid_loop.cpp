@@ -250,11 +250,8 @@ void PairESPHSolid::pair_loop(LoopOut &out)
         double wj = mj, wi = mi, si = 1.0, sj = 1.0;
         int vol = 0;
         if (cross && !(ri || rj)) {
-          const double r0i = eos[type[i]].rho0, r0j = eos[type[j]].rho0;
-          if (r0i != r0j) {
+          if (volume_ratio(type[i], type[j], si, sj)) {
             vol = 1;
-            si = r0i / r0j;
-            sj = r0j / r0i;
             wj = si * mj;
             wi = sj * mi;
           }
@@ -561,12 +558,10 @@ double PairESPHSolid::cross_dt(int i, int j, double mi, double mj) const
 {
   const int l = (mi < mj) ? i : j, hv = (mi < mj) ? j : i;
   const double *ql = hq[l], *qh = hq[hv];
-  const double clh =
-      sqrt(qh[Q_C] * qh[Q_C] + 4.0 * shear[atom->type[hv]] * units.pressure_in / (3.0 * qh[Q_RHO]));
+  const double clh = long_speed(qh[Q_C] * qh[Q_C], qh[Q_RHO], atom->type[hv]);
   const double ceff = CROSS_DT_K * clh * sqrt(std::max(mi, mj) / std::min(mi, mj));
   const double vl = sqrt(ql[Q_V] * ql[Q_V] + ql[Q_V + 1] * ql[Q_V + 1] + ql[Q_V + 2] * ql[Q_V + 2]);
-  const double visc_cfl = (alpha > VISC_CFL_ALPHA) ? VISC_CFL_ALPHA / alpha : 1.0;
-  return visc_cfl * ql[Q_H] / (ceff + vl);
+  return visc_cfl_factor() * ql[Q_H] / (ceff + vl);
 }
 
 /* ----------------------------------------------------------------------

@@ -81,8 +81,7 @@ void PairESPHSolid::hoist()
   double **drec = recon_flag ? state->drec : nullptr;
   double **drecu = recon_flag ? state->drecu : nullptr;
   const int recon_shift = drec && !recon_keep;
-  // the viscous limit of the CFL estimate (alpha is the switch's ceiling with visc/switch)
-  const double visc_cfl = (alpha > VISC_CFL_ALPHA) ? VISC_CFL_ALPHA / alpha : 1.0;
+  const double visc_cfl = visc_cfl_factor();
   // the gap forecast of the boundary particles (add_gap_sums())
   const double dt = dt_step;
   // the vector pass runs in this computation: position, mass and body into the rows too
@@ -161,7 +160,7 @@ void PairESPHSolid::hoist()
         q[Q_E] = e;
         if (alpha_now) q[Q_ALPHA] = p ? p[FixESPHIntegrate::P_ALPHA] : alpha_now[i];
         // CFL with the longitudinal wave speed, and the viscous limit for a large alpha
-        const double cl = sqrt(c2 + 4.0 * shear[itype] * pin / (3.0 * rho));
+        const double cl = long_speed(c2, rho, itype);
         const double vmag = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
         double dti = visc_cfl * h / (cl + vmag);
         if (heat_flag) {
