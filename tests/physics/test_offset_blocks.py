@@ -12,8 +12,9 @@ no momentum across (issue 12: a contact that holds on faces, edges and corners).
   momentum (0.53 with the projection's early touch): a finding, reported and guarded
   against getting worse;
 - contact/normal cone: the face's normal, 0.029 (0.033 with the projection).
-- a cube turned corner first onto a face (in.corner_face) couples when the corner meets
-  the face, as with the projection.
+- a cube turned corner first onto a face (in.corner_face) touches no earlier than the
+  corner meets the face, and couples half a spacing later (a finding, issue 12: the
+  corner's real particles average the gaps of its faces), as with the projection.
 About 30 seconds."""
 
 import esphtest as et
@@ -74,23 +75,29 @@ for np_ in (2, 4):
     c.less(f"np {np_}: momentum across against np 1, relative",
            abs(s["p1y_rel"] / g["p1y_rel"] - 1.0), 1e-9, "round-off (printed to 7 digits)")
 # a cube turned corner first (tests/physics/in.corner_face): the touch is decided by the
-# particles' cells, turned with the cube; its corner couples when it meets the face
+# particles' cells, turned with the cube, but the corner's real particles average the gaps
+# of the three faces' boundary particles and couple late (issue 12, open; until 2026-12-06
+# the scene's face lay half a spacing nearer than its comment said, and the late coupling
+# passed for an exact one)
 CF = et.source_input(a, "in.corner_face")
 cf = {}
 for name, extra in (("touch", ""), ("projection", "contact/gap projection")):
     cf[name] = et.summary(et.run(a, CF, {"pextra": extra}, log=f"log.corner_{name}"),
                           "CORNER_FACE")
     print(f"INFO turned corner, {name}: {cf[name]}")
-c.less("turned corner on a face: first touch within 0.03 spacings of the meeting [spacings]",
-       abs(T_MEET - cf["touch"]["t_first"]) / SPACING_US, 0.03,
-       f"the corner meets the face at {T_MEET:.2f} us (measured 3.977 us, 0.006 spacings)")
+late = (cf["touch"]["t_first"] - T_MEET) / SPACING_US
+c.less("turned corner on a face: no touch before the meeting [spacings]", -late, 0.03,
+       f"the corner meets the face at {T_MEET:.2f} us; the cells meet then")
+c.less("turned corner on a face: first touch after the meeting (finding) [spacings]", late, 0.55,
+       "exact 0; measured 0.494 (5.98 us): the corner's real particles average the gaps of "
+       "its faces' boundary particles (pair_esph_solid.rst, Touch, open; issue 12)")
 c.less("turned corner on a face: first touch not after the projection's [us]",
        cf["touch"]["t_first"] - cf["projection"]["t_first"], 1e-9,
        "the turned cells meet with the corner (measured the same step)")
 c.true("turned corner on a face: one contact episode", cf["touch"]["episodes"] == 1,
        "hit and rebound")
 c.less("turned corner on a face: energy drift, relative", abs(cf["touch"]["edrift"]), 1e-3,
-       "contact keeps the energy (measured 5.7e-5)")
+       "contact keeps the energy (measured 1.2e-4)")
 c.less("cone rule: momentum across / impact momentum", abs(res["cone"]["p1y_rel"]), 0.05,
        "exact 0; measured 0.033 (0.025 at 0.1 mm): the face's normal for an edge on a face")
 c.less("mean normal: momentum across / impact momentum (finding)", abs(res["mean"]["p1y_rel"]),
