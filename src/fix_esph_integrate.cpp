@@ -307,6 +307,10 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   }
   for (int i = 0; i < nlocal; i++)
     if (move && (mask[i] & groupbit) && state->rmass[i] == 0.0) {
+      // a run that starts afresh: the velocity its setup computation saw, for a next run that
+      // re-evaluates that computation (after run 0, resume_check())
+      if (havepred != 1)
+        for (int d = 0; d < 3; d++) pred[i][P_V + d] = v[i][d];
       v[i][0] = pair->bvel[i][0];
       v[i][1] = pair->bvel[i][1];
       v[i][2] = pair->bvel[i][2];

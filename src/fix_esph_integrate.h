@@ -103,7 +103,8 @@ class FixESPHIntegrate : public Fix {
   int spin_watch_on;               // watched in this run
   ESPHEnergyWatch energy_watch;    // internal energy of every body (every run)
   void contact_tallies(double *total);
-  int havepred;        // pred holds the prediction of a completed step
+  int havepred;        // pred holds the prediction of a completed step (1), or the last force
+                       // computation was the setup of a run without steps (2, run 0)
   bigint fp_natoms;    // number of atoms when the fingerprints were stored
   bigint fp_step;      // step at which they were stored
   int time_pending;    // read_restart: restore the elapsed time at the next init

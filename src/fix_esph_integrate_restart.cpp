@@ -64,6 +64,10 @@ void FixESPHIntegrate::post_run()
   dt_used = pair->dt_step;
   fp_natoms = atom->natoms;
   fp_step = update->ntimestep;
+  // a run without steps (run 0): its setup computation, from the state as is, was the last
+  // one; the next run re-evaluates it (resume_check()) instead of starting afresh from the
+  // engagements, strain rates and cones it stored, so that run 0 then run N is run N
+  if (!havepred) havepred = 2;
 }
 
 /* ----------------------------------------------------------------------
@@ -79,18 +83,19 @@ void FixESPHIntegrate::save_normal_used(int i, double *out)
 }
 
 /* ----------------------------------------------------------------------
-   called by the pair style at the setup of a run: true if the prediction
-   of the last completed step (of the previous run, or of the run that wrote
+   called by the pair style at the setup of a run: 1 if the prediction of
+   the last completed step (of the previous run, or of the run that wrote
    the restart file) still belongs to every atom, i.e. nothing changed the
    state since (set, velocity, displace_atoms, read_data, create_atoms,
-   delete_atoms, ...). Then the setup force computation is a re-evaluation
-   of the last one and the run continues exactly; otherwise it starts from
-   the current state. Work at run boundaries only.
+   delete_atoms, ...); 2 if the last run had no steps (run 0) and nothing
+   changed since its setup computation. Then the setup force computation is
+   a re-evaluation of the last one and the run continues exactly; otherwise
+   (0) it starts from the current state. Work at run boundaries only.
 ------------------------------------------------------------------------- */
 
 int FixESPHIntegrate::resume_check()
 {
-  int ok = havepred && update->whichflag == 1 && atom->natoms == fp_natoms;
+  int ok = havepred > 0 && update->whichflag == 1 && atom->natoms == fp_natoms;
   state->fetch();
   if (ok)
     for (int i = 0; i < atom->nlocal; i++)
@@ -121,13 +126,18 @@ int FixESPHIntegrate::resume_check()
         turned_n[3 * i + d] = state->n[i][d];
         state->n[i][d] = pred[i][P_USED + d];
       }
+    // (after run 0: the boundary particles' velocities that computation saw, which setup()
+    // then replaced by their interpolated ones)
+    if (havepred == 2 && move && state->rmass[i] == 0.0 && (atom->mask[i] & groupbit))
+      for (int d = 0; d < 3; d++) atom->v[i][d] = pred[i][P_V + d];
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
     state->eng[i] = pred[i][P_USED + 5];
   }
   // and the time step of its gap forecast (with the cfl keyword the step has changed since)
   pair->dt_step = dt_used;
-  return 1;
+  // (after a run without steps the computation re-evaluated is from the state as is)
+  return havepred == 1 ? 1 : 2;
 }
 
 /* ----------------------------------------------------------------------

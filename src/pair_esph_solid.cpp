@@ -451,11 +451,14 @@ void PairESPHSolid::setup()
 {
   check_hybrid();
   // (resume_check() restores the time step of the last computation for the gap forecast)
-  pred_valid = fix_int->resume_check();
-  normals_valid = pred_valid;
-  dt_keep = pred_valid;
-  recon_keep = pred_valid;
-  cone_keep = pred_valid;
+  // 1: a continued run, at the prediction of the last step; 2: after a run without steps,
+  // at the state as is (the setup computation of that run, re-evaluated)
+  const int resumed = fix_int->resume_check();
+  pred_valid = (resumed == 1);
+  normals_valid = (resumed != 0);
+  dt_keep = (resumed != 0);
+  recon_keep = (resumed != 0);
+  cone_keep = (resumed != 0);
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;

@@ -21,7 +21,9 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   rod      examples/rod_impact, 3D, dx = 0.25 mm, 10 mm rods, fixed step
   slabs    examples/oblique_slabs (periodic in x and z), split at step 100, when 136 atoms
            have left the periodic box since the last neighbour list build
-Variants against the uninterrupted run: split in 2 and 3 parts, a run 0 in between, the
+Variants against the uninterrupted run: split in 2 and 3 parts, a run 0 in between or
+before the first step (for the rod and the slabs also written to a restart file after it and
+read back), the
 second part with pre no, start/stop, a loop of 5 run commands, balance between the parts,
 write_restart between runs
 and read_restart in a new process (in the same process after clear for the rod), a restart
@@ -129,6 +131,11 @@ def drivers(scene):
         "split2": [f"run {k}\nrun {r}\n"],
         "split3": [f"run 17\nrun {k - 17 + 3}\nrun {NSTEPS - k - 3}\n"],
         "run0": [f"run {k}\nrun 0\nrun {r}\n"],
+        # a run 0 before the first step (its setup computation from the state as is, which
+        # the next run re-evaluates; before 2026-12-06 the next run started afresh from the
+        # engagements and boundary velocities the run 0 had left: the rods' contact 3 steps
+        # shorter)
+        "run0first": [f"run 0\nrun {NSTEPS}\n"],
         "preno": [f"run {k}\nrun {r} pre no\n"],
         "startstop": [f"run {k} start 0 stop {NSTEPS}\nrun {r} start 0 stop {NSTEPS}\n"],
         "loop": [f"variable i loop 5\nlabel l\nrun {NSTEPS // 5}\nnext i\njump SELF l\n"],
@@ -139,6 +146,8 @@ def drivers(scene):
         # variables survive clear: restart in the same process
         d["restart"] = [f"run {k}\nwrite_restart r.bin\nclear\nread_restart r.bin\n{{styles}}"
                         f"run {r}\n"]
+        d["run0restart"] = [f"run 0\nwrite_restart r0.bin\nclear\nread_restart r0.bin\n"
+                            f"{{styles}}run {NSTEPS}\n"]
     else:
         d["restart"] = [f"run {k}\nwrite_restart r.bin\n", RESTART_NEW + "r.bin", f"run {r}\n"]
         # written by the restart command in the middle of a run (not at its end)
