@@ -68,7 +68,7 @@ FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
 
   cfl = 0.0;
   move = 1;
-  havepred = 0;
+  havepred = RESUME_NONE;
   fp_natoms = -1;
   fp_step = -1;
   time_pending = 0;
@@ -306,10 +306,10 @@ void FixESPHIntegrate::setup(int /*vflag*/)
     turned_n.clear();
   }
   for (int i = 0; i < nlocal; i++)
-    if (move && (mask[i] & groupbit) && state->rmass[i] == 0.0) {
+    if (moves_boundary(i)) {
       // a run that starts afresh: the velocity its setup computation saw, for a next run that
       // re-evaluates that computation (after run 0, resume_check())
-      if (havepred != 1)
+      if (havepred != RESUME_STEP)
         for (int d = 0; d < 3; d++) pred[i][P_V + d] = v[i][d];
       v[i][0] = pair->bvel[i][0];
       v[i][1] = pair->bvel[i][1];
@@ -643,6 +643,16 @@ void FixESPHIntegrate::advance_state(int i, double dt, int with_e)
 }
 
 /* ----------------------------------------------------------------------
+   atom i is a boundary particle this fix moves (with the velocity
+   interpolated from its body)
+------------------------------------------------------------------------- */
+
+bool FixESPHIntegrate::moves_boundary(int i) const
+{
+  return move && (atom->mask[i] & groupbit) && state->rmass[i] == 0.0;
+}
+
+/* ----------------------------------------------------------------------
    the prediction of atom i is its state as it is
 ------------------------------------------------------------------------- */
 
@@ -800,7 +810,7 @@ void FixESPHIntegrate::final_integrate()
     }
   // force computations outside a step see the state as is, unless a run continues
   pair->pred_valid = 0;
-  havepred = 1;
+  havepred = RESUME_STEP;
 
   // contact bookkeeping (ESPH::ContactRecord): the contact force F is the sum of the
   // compressive normal forces transmitted between bodies; contact begins with the first

@@ -61,6 +61,7 @@ class FixESPHIntegrate : public Fix {
 
   // true if this run continues the last step exactly (see resume_check())
   int resume_check();
+  bool moves_boundary(int i) const;
 
   // per atom, migrating with the atoms (exchange, sorting) and in restart files:
   // the predicted end-of-step state, made in initial_integrate and read by the pair during
@@ -72,6 +73,10 @@ class FixESPHIntegrate : public Fix {
   // the rates of the force computation before the last one that the extrapolated
   // prediction needs (P_PREV .. P_PREV + NRATES - 1: force, drho, de, dh, dS, dalpha) with
   // a flag that they belong to this atom's trajectory (P_PREVOK)
+  // what the last force computation was (havepred) and what resume_check() found: nothing to
+  // continue, the computation of a completed step, or the setup computation of a run
+  // without steps (run 0), re-evaluated from the state as is
+  enum { RESUME_NONE = 0, RESUME_STEP = 1, RESUME_SETUP = 2 };
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
                        P_HASH = 19, P_ALPHA = 20, P_X = 21, P_PREV = 24, NRATES = 13, P_PREVOK = 37,
                        NPRED = 38;
@@ -103,8 +108,8 @@ class FixESPHIntegrate : public Fix {
   int spin_watch_on;               // watched in this run
   ESPHEnergyWatch energy_watch;    // internal energy of every body (every run)
   void contact_tallies(double *total);
-  int havepred;        // pred holds the prediction of a completed step (1), or the last force
-                       // computation was the setup of a run without steps (2, run 0)
+  int havepred;        // RESUME_STEP: pred holds the prediction of a completed step;
+                       // RESUME_SETUP: the last force computation was the setup of a run 0
   bigint fp_natoms;    // number of atoms when the fingerprints were stored
   bigint fp_step;      // step at which they were stored
   int time_pending;    // read_restart: restore the elapsed time at the next init

@@ -67,7 +67,7 @@ void FixESPHIntegrate::post_run()
   // a run without steps (run 0): its setup computation, from the state as is, was the last
   // one; the next run re-evaluates it (resume_check()) instead of starting afresh from the
   // engagements, strain rates and cones it stored, so that run 0 then run N is run N
-  if (!havepred) havepred = 2;
+  if (havepred == RESUME_NONE) havepred = RESUME_SETUP;
 }
 
 /* ----------------------------------------------------------------------
@@ -95,7 +95,7 @@ void FixESPHIntegrate::save_normal_used(int i, double *out)
 
 int FixESPHIntegrate::resume_check()
 {
-  int ok = havepred > 0 && update->whichflag == 1 && atom->natoms == fp_natoms;
+  int ok = havepred != RESUME_NONE && update->whichflag == 1 && atom->natoms == fp_natoms;
   state->fetch();
   if (ok)
     for (int i = 0; i < atom->nlocal; i++)
@@ -107,10 +107,10 @@ int FixESPHIntegrate::resume_check()
   MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, world);
   // a fresh start: the prediction is stale until a step is completed
   if (!all) {
-    havepred = 0;
+    havepred = RESUME_NONE;
     // nor do the rates stored for the extrapolated prediction
     for (int i = 0; i < atom->nlocal; i++) pred[i][P_PREVOK] = 0.0;
-    return 0;
+    return RESUME_NONE;
   }
   // the re-evaluation uses the normals the last computation used; it stores the ones it
   // finds, as that computation did
@@ -128,7 +128,7 @@ int FixESPHIntegrate::resume_check()
       }
     // (after run 0: the boundary particles' velocities that computation saw, which setup()
     // then replaced by their interpolated ones)
-    if (havepred == 2 && move && state->rmass[i] == 0.0 && (atom->mask[i] & groupbit))
+    if (havepred == RESUME_SETUP && moves_boundary(i))
       for (int d = 0; d < 3; d++) atom->v[i][d] = pred[i][P_V + d];
     state->gap[i] = pred[i][P_USED + 3];
     state->gapv[i] = pred[i][P_USED + 4];
@@ -137,7 +137,7 @@ int FixESPHIntegrate::resume_check()
   // and the time step of its gap forecast (with the cfl keyword the step has changed since)
   pair->dt_step = dt_used;
   // (after a run without steps the computation re-evaluated is from the state as is)
-  return havepred == 1 ? 1 : 2;
+  return havepred;
 }
 
 /* ----------------------------------------------------------------------

@@ -454,11 +454,11 @@ void PairESPHSolid::setup()
   // 1: a continued run, at the prediction of the last step; 2: after a run without steps,
   // at the state as is (the setup computation of that run, re-evaluated)
   const int resumed = fix_int->resume_check();
-  pred_valid = (resumed == 1);
-  normals_valid = (resumed != 0);
-  dt_keep = (resumed != 0);
-  recon_keep = (resumed != 0);
-  cone_keep = (resumed != 0);
+  pred_valid = (resumed == FixESPHIntegrate::RESUME_STEP);
+  normals_valid = (resumed != FixESPHIntegrate::RESUME_NONE);
+  dt_keep = normals_valid;
+  recon_keep = normals_valid;
+  cone_keep = normals_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
