@@ -16,10 +16,14 @@ no momentum across (issue 12: a contact that holds on faces, edges and corners).
   corner meets the face, and couples half a spacing later (a finding, issue 12: the
   corner's real particles average the gaps of its faces), as with the projection; cubes
   turned 45 degrees meeting edge to edge (in.edge_cubes, parallel and crossed edges) alike;
+  a cube's edge landing on a face couples on time at 30 degrees, 0.15 spacings late at 45
+  (a finding), and cubes turned 30 degrees alike (their edges land on each other's faces)
+  on time;
   a small face landing inside a larger one (in.footprint): the rebound does not depend on
   the size of a closed gap, a touching start differs (a finding).
 About 45 seconds."""
 
+import math
 import esphtest as et
 
 a = et.parse_args()
@@ -116,6 +120,27 @@ for name, var, bound, measured in (("parallel", {}, 0.85, 0.80),
            f"exact 0; measured {measured} (pair_esph_solid.rst, Touch, open; issue 12)")
     c.less(f"edges {name}: momentum across / impact momentum", abs(e["p1y_rel"]), 1e-12,
            "the scene's point symmetry: round-off")
+# an edge landing on a face (cross 2: the second cube aligned with the box), and the cubes
+# turned 30 degrees alike, whose edges do not face each other: each lands on the other's
+# face when the faces with the normal (cos 30, sin 30, 0) of both cubes come together, their
+# centres a / cos 30 apart along x (a = 1.2 mm, the side): (2 (half + gap / 2) - a / cos 30)
+# / (2 V) = 9.07 us. An edge on a face couples when it meets it at 20 and 30 degrees; at 45
+# degrees 0.15 spacings late (a finding, guarded)
+for name, var, t_meet, late_bound, measured in (
+        ("45 degrees on a face", {"cross": 2}, T_MEET, 0.2, "0.15 (4.59 us)"),
+        ("30 degrees on a face", {"cross": 2, "ang": 30}, T_MEET, 0.03, "0.009 (4.035 us)"),
+        ("30 degrees, edges on faces", {"ang": 30},
+         (2.0 * 0.6e-3 * (math.cos(math.pi / 6) + math.sin(math.pi / 6)) + 0.2e-3 -
+          1.2e-3 / math.cos(math.pi / 6)) / 50.0 * 1e6, 0.03, "-0.02 (8.99 us)")):
+    e = et.summary(et.run(a, EC, var, log=f"log.edge_{name.split()[0]}_{var.get('cross', 0)}"),
+                   "EDGE")
+    print(f"INFO edge {name}: {e}")
+    late = (e["t_first"] - t_meet) / SPACING_US
+    c.less(f"edge {name}: no touch before the meeting [spacings]", -late, 0.03,
+           f"they meet at {t_meet:.3f} us")
+    c.less(f"edge {name}: first touch after the meeting [spacings]", late, late_bound,
+           f"exact 0; measured {measured}")
+    c.true(f"edge {name}: one contact episode", e["episodes"] == 1, "hit and rebound")
 # a small face landing inside a larger one (tests/physics/in.footprint, 0.25 mm): once a gap
 # has closed, its size does not matter; a touching start differs (a finding, issue 12: the
 # particles under the small face's corners read gaps within 0.03 spacings of zero)
