@@ -59,7 +59,11 @@ class FixESPHIntegrate : public Fix {
   int maxsize_restart() override;
   double memory_usage() override;
 
-  // true if this run continues the last step exactly (see resume_check())
+  // what the last force computation was (havepred) and what resume_check() found: nothing to
+  // continue, the computation of a completed step, or the setup computation of a run
+  // without steps (run 0), re-evaluated from the state as is
+  enum { RESUME_NONE = 0, RESUME_STEP = 1, RESUME_SETUP = 2 };
+  // the state this run continues (RESUME_NONE: it starts afresh; see resume_check())
   int resume_check();
   bool moves_boundary(int i) const;
 
@@ -73,10 +77,6 @@ class FixESPHIntegrate : public Fix {
   // the rates of the force computation before the last one that the extrapolated
   // prediction needs (P_PREV .. P_PREV + NRATES - 1: force, drho, de, dh, dS, dalpha) with
   // a flag that they belong to this atom's trajectory (P_PREVOK)
-  // what the last force computation was (havepred) and what resume_check() found: nothing to
-  // continue, the computation of a completed step, or the setup computation of a run
-  // without steps (run 0), re-evaluated from the state as is
-  enum { RESUME_NONE = 0, RESUME_STEP = 1, RESUME_SETUP = 2 };
   static constexpr int P_RHO = 0, P_E = 1, P_H = 2, P_S = 3, P_V = 9, P_DIVV = 12, P_USED = 13,
                        P_HASH = 19, P_ALPHA = 20, P_X = 21, P_PREV = 24, NRATES = 13, P_PREVOK = 37,
                        NPRED = 38;

@@ -83,14 +83,15 @@ void FixESPHIntegrate::save_normal_used(int i, double *out)
 }
 
 /* ----------------------------------------------------------------------
-   called by the pair style at the setup of a run: 1 if the prediction of
-   the last completed step (of the previous run, or of the run that wrote
-   the restart file) still belongs to every atom, i.e. nothing changed the
-   state since (set, velocity, displace_atoms, read_data, create_atoms,
-   delete_atoms, ...); 2 if the last run had no steps (run 0) and nothing
-   changed since its setup computation. Then the setup force computation is
-   a re-evaluation of the last one and the run continues exactly; otherwise
-   (0) it starts from the current state. Work at run boundaries only.
+   called by the pair style at the setup of a run: RESUME_STEP if the
+   prediction of the last completed step (of the previous run, or of the run
+   that wrote the restart file) still belongs to every atom, i.e. nothing
+   changed the state since (set, velocity, displace_atoms, read_data,
+   create_atoms, delete_atoms, ...); RESUME_SETUP if the last run had no
+   steps (run 0) and nothing changed since its setup computation. Then the
+   setup force computation is a re-evaluation of the last one and the run
+   continues exactly; otherwise (RESUME_NONE) it starts from the current
+   state. Work at run boundaries only.
 ------------------------------------------------------------------------- */
 
 int FixESPHIntegrate::resume_check()

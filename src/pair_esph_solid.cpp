@@ -451,8 +451,8 @@ void PairESPHSolid::setup()
 {
   check_hybrid();
   // (resume_check() restores the time step of the last computation for the gap forecast)
-  // 1: a continued run, at the prediction of the last step; 2: after a run without steps,
-  // at the state as is (the setup computation of that run, re-evaluated)
+  // RESUME_STEP: a continued run, at the prediction of the last step; RESUME_SETUP: after a
+  // run without steps, at the state as is (the setup computation of that run, re-evaluated)
   const int resumed = fix_int->resume_check();
   pred_valid = (resumed == FixESPHIntegrate::RESUME_STEP);
   normals_valid = (resumed != FixESPHIntegrate::RESUME_NONE);
