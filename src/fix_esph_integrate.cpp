@@ -26,6 +26,7 @@
 #include "error.h"
 #include "esph_check.h"
 #include "esph_contact.h"
+#include "esph_prefetch.h"
 #include "esph_state.h"
 #include "esph_strength.h"
 #include "esph_threads.h"
@@ -494,6 +495,13 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
 
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
     for (int i = from; i < to; i++) {
+      if (i + ESPH::PREFETCH_AHEAD < to) {
+        const int ip = i + ESPH::PREFETCH_AHEAD;
+        ESPH::prefetch_write(pred[ip], NPRED);
+        ESPH::prefetch_write(s[ip], 6);
+        ESPH::prefetch_read(ds[ip], 6);
+        ESPH::prefetch_read(f[ip], 3);
+      }
       double *p = pred[i];
       if (i < nint && (mask[i] & groupbit)) {
         if (rmass[i] > 0.0) {
@@ -758,8 +766,15 @@ void FixESPHIntegrate::final_integrate()
   std::vector<int> nonfinite(nthreads, -1);
   int *const nonfinite_t = nonfinite.data();
 
+  double **s = state->s, **ds = pair->ds;
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     for (int i = from; i < to; i++) {
+      if (i + ESPH::PREFETCH_AHEAD < to) {
+        const int ip = i + ESPH::PREFETCH_AHEAD;
+        ESPH::prefetch_write(s[ip], 6);
+        ESPH::prefetch_read(ds[ip], 6);
+        ESPH::prefetch_read(f[ip], 3);
+      }
       const bool in_group = i < nint && (mask[i] & groupbit);
       if (turns_at_end(i)) {
         // a boundary particle that another fix moves (fix move on a rigid body, or move no)

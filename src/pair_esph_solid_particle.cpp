@@ -31,6 +31,7 @@
 #include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_kernel.h"
+#include "esph_prefetch.h"
 #include "esph_state.h"
 #include "esph_strength.h"
 #include "esph_threads.h"
@@ -104,6 +105,15 @@ void PairESPHSolid::hoist()
     double dtl = BIG_DT;
     int hb = -1, nf = -1;
     for (int i = from; i < to; i++) {
+      if (i + ESPH::PREFETCH_AHEAD < to) {
+        const int ip = i + ESPH::PREFETCH_AHEAD;
+        ESPH::prefetch_write(hq[ip], Q_ENG + 1);
+        if (pred) ESPH::prefetch_read(pred[ip], FixESPHIntegrate::P_V + 3);
+        if (drec) {
+          ESPH::prefetch_read(drec[ip], 6);
+          ESPH::prefetch_write(drecu[ip], 6);
+        }
+      }
       if (recon_shift)
         for (int k = 0; k < 6; k++) drecu[i][k] = drec[i][k];
       double *q = hq[i];
@@ -296,14 +306,25 @@ void PairESPHSolid::finalize(int eflag)
 
   std::vector<double> esum(nthreads, 0.0);
   double *const esum_t = esum.data();
+  double **pred = pred_valid ? fix_int->pred : nullptr;
+  double **drec = recon_flag ? state->drec : nullptr;
+  const int ncols = acc_cols;
   ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int tid) {
     double es = 0.0;
     for (int i = from; i < to; i++) {
+      if (i + ESPH::PREFETCH_AHEAD < to) {
+        const int ip = i + ESPH::PREFETCH_AHEAD;
+        ESPH::prefetch_read(acc[ip], ncols);
+        ESPH::prefetch_read(hq[ip], Q_ENG + 1);
+        if (pred) ESPH::prefetch_read(pred[ip] + FixESPHIntegrate::P_S, 6);
+        ESPH::prefetch_write(ds[ip], 6);
+        if (drec) ESPH::prefetch_write(drec[ip], 6);
+      }
       const double *a = acc[i];
       const double *q = hq[i];
       if (rmass[i] > 0.0) {
         const double rho = q[Q_RHO];
-        const double *sp = pred_valid ? fix_int->pred[i] + FixESPHIntegrate::P_S : state->s[i];
+        const double *sp = pred ? pred[i] + FixESPHIntegrate::P_S : state->s[i];
         Eigen::Matrix3d L;
         L << a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8];
         // continuity (eq. 1): drho_i = sum_j m_j (v_i - v_j).grad_i W = -tr G

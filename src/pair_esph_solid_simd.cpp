@@ -36,6 +36,7 @@
 
 #include "atom.h"
 #include "esph_kernel.h"
+#include "esph_prefetch.h"
 #include "esph_state.h"
 #include "esph_threads.h"
 #include "force.h"
@@ -674,8 +675,15 @@ void PairESPHSolid::bulk_pass(LoopOut &out)
   c.norm = kernel_norm(kernel, dim, h0);
   const int corr = (correct_flag == CORRECT_RATE);
 
+  const int ncols = acc_cols;
   for (int ii = out.iifrom; ii < out.iito; ii++) {
     const int i = ilist[ii];
+    // (the rows this particle's sums go to, a few particles ahead: esph_prefetch.h)
+    if (ii + ESPH::PREFETCH_AHEAD < out.iito) {
+      const int ip = ilist[ii + ESPH::PREFETCH_AHEAD];
+      ESPH::prefetch_write(out.acc[ip], ncols);
+      ESPH::prefetch_write(out.f[ip], 3);
+    }
     if (!(rmass[i] > 0.0)) {
       if (c.bnd) bnd_atom(c, i, partners(i), nbulk[i], out.acc[i]);
       continue;
