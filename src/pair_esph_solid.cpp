@@ -683,8 +683,14 @@ void PairESPHSolid::compute(int eflag, int vflag)
   // without boundary particles or gradient correction only G and the heating terms
   // (the cone sums, the last 6 slots, only with contact/normal cone)
   nreverse = (bnd || correct_flag || xsph_flag) ? acc_cols : 11;
+  // (the rows are contiguous, memory->create(): all columns of a chunk of rows at once where
+  // every column is cleared, instead of a call per row)
+  const int ncols = acc_cols, nrev = nreverse;
   ESPH::for_chunks(nthreads, nall, [=](int from, int to, int) {
-    for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nreverse);
+    if (nrev == ncols && to > from)
+      memset(acc[from], 0, sizeof(double) * ncols * (size_t) (to - from));
+    else
+      for (int i = from; i < to; i++) memset(acc[i], 0, sizeof(double) * nrev);
   });
 
   // (the correction weighs cross-body pairs as the pair pass does: the same touch)
