@@ -24,6 +24,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_bodies.h"
 #include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_prefetch.h"
@@ -57,6 +58,7 @@ static inline double advance_alpha(double a, double rate, double dt, double amin
 FixESPHIntegrate::FixESPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), pred(nullptr), nthreads(1), pair(nullptr), state(nullptr)
 {
+  stepping = 0;
   time_integrate = 1;
   restart_global = 1;
   restart_peratom = 1;
@@ -293,6 +295,7 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   // a continued run evaluated the setup forces at the prediction of the last step; force
   // computations outside a step (e.g. rerun) see the state as is
   pair->pred_valid = 0;
+  stepping = 0;
   state->fetch();
   double **v = atom->v;
   const int *mask = atom->mask;
@@ -341,6 +344,13 @@ void FixESPHIntegrate::setup(int /*vflag*/)
       !other_torques();
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
   energy_watch.setup(lmp, state, groupbit);
+  // the bodies whose boundary particles this fix does not move (check_boundary_motion())
+  std::vector<int> mine;
+  for (int i = 0; i < nlocal; i++)
+    if (turns_at_end(i) && state->body) mine.push_back(state->body[i]);
+  std::sort(mine.begin(), mine.end());
+  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+  moved_bodies = ESPHCheck::global_set(lmp, mine);
   // (positions may have been changed between runs: the motion check starts afresh)
   moved_step = -1;
   moved_then.clear();
@@ -565,6 +575,7 @@ void FixESPHIntegrate::initial_integrate(int /*vflag*/)
     }
   });
   pair->pred_valid = 1;
+  stepping = 1;
   // the step between the rates just stored and those of the next computation
   if (extrap_on) dt_prev = update->dt;
 }
@@ -600,6 +611,7 @@ void FixESPHIntegrate::initial_integrate_staggered()
     }
   });
   pair->pred_valid = 1;
+  stepping = 1;
   pair->stagger_rates();
   stagger_commit();
 
@@ -658,6 +670,71 @@ void FixESPHIntegrate::advance_state(int i, double dt, int with_e)
 bool FixESPHIntegrate::moves_boundary(int i) const
 {
   return move && (atom->mask[i] & groupbit) && state->rmass[i] == 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the boundary particles that this fix does not move must move with their
+   body, as another fix moves it (fix move on the whole body) or not at
+   all: per body, the rms difference of their velocities from the one the
+   force computation interpolated from the body's real particles (bvel),
+   against the rms of those velocities. A fix applied to the real
+   particles alone leaves the boundary particles behind, and the contact
+   then acts at a surface that stands still (collective; an ERROR)
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::check_boundary_motion()
+{
+  const int nb = moved_bodies.size();
+  std::vector<double> sum(4 * nb, 0.0), all(4 * nb);
+  double **v = atom->v;
+  double **bvel = pair->bvel;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!turns_at_end(i)) continue;
+    const int k = ESPH::body_slot(moved_bodies, state->body[i]);
+    if (k < 0) continue;
+    double *s = &sum[4 * k];
+    for (int d = 0; d < 3; d++) {
+      s[0] += (v[i][d] - bvel[i][d]) * (v[i][d] - bvel[i][d]);
+      s[1] += bvel[i][d] * bvel[i][d];
+      s[2] += v[i][d] * v[i][d];
+    }
+    s[3] += 1.0;
+  }
+  MPI_Allreduce(sum.data(), all.data(), 4 * nb, MPI_DOUBLE, MPI_SUM, world);
+  for (int k = 0; k < nb; k++) {
+    const double *a = &all[4 * k];
+    // (rigid motion is interpolated exactly; a quarter of the squares leaves room for the
+    // interpolation of other motions, a left-behind surface gives all of them)
+    if (!(a[0] > BND_MOTION_SHARE * (a[1] + a[2]))) continue;
+    // (the sums are the same on every rank: all call it)
+    error->all(FLERR,
+               "Fix esph/integrate: at step {} the boundary particles of body {} do not move "
+               "with its real particles (their velocities differ by {:.4g} rms from those "
+               "interpolated from the real particles, {:.4g} rms; their own {:.4g} rms): "
+               "another fix moves the body's real particles but not its boundary particles, "
+               "so the body's contact surface stays behind; apply that fix (e.g. fix move) "
+               "to all atoms of the body, boundary particles included (a group of its "
+               "i_esph_body or of its region, not of the real particles alone)",
+               update->ntimestep, moved_bodies[k], sqrt(a[0] / a[3]), sqrt(a[1] / a[3]),
+               sqrt(a[2] / a[3]));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the specific internal energy of real particle i at the end of this
+   step, with the rate dei of its force computation: final_integrate()'s
+   arithmetic (advance_state(), or the staggered scheme's mean of its two
+   passes) for the particles it advances, the state as is otherwise and
+   outside a step (the setup computation, also of a continued run, whose
+   state is that of the end of the last step)
+------------------------------------------------------------------------- */
+
+double FixESPHIntegrate::end_energy(int i, double dei) const
+{
+  const int nint = (igroup == atom->firstgroup) ? atom->nfirst : atom->nlocal;
+  if (!stepping || i >= nint || !(atom->mask[i] & groupbit)) return state->e[i];
+  if (staggered) return 0.5 * (state->e[i] + pred[i][P_E]) + dth * dei;
+  return state->e[i] + dth * dei;
 }
 
 /* ----------------------------------------------------------------------
@@ -825,6 +902,8 @@ void FixESPHIntegrate::final_integrate()
     }
   // force computations outside a step see the state as is, unless a run continues
   pair->pred_valid = 0;
+  stepping = 0;
+  if (!moved_bodies.empty()) check_boundary_motion();
   havepred = RESUME_STEP;
 
   // contact bookkeeping (ESPH::ContactRecord): the contact force F is the sum of the

@@ -66,6 +66,11 @@ class FixESPHIntegrate : public Fix {
   // the state this run continues (RESUME_NONE: it starts afresh; see resume_check())
   int resume_check();
   bool moves_boundary(int i) const;
+  // the specific internal energy (energy/mass units) real particle i has at the end of the
+  // step of this force computation, given the rate de_i it just computed: what
+  // final_integrate() will make of it inside a step, the state as is outside one (the
+  // energy the pair style tallies, thermo pe)
+  double end_energy(int i, double dei) const;
 
   // per atom, migrating with the atoms (exchange, sorting) and in restart files:
   // the predicted end-of-step state, made in initial_integrate and read by the pair during
@@ -85,7 +90,12 @@ class FixESPHIntegrate : public Fix {
   // (omega dt)^4 amplitude error of the predictor-corrector on an undamped mode
   static constexpr double EXTRAP_A = 4.0 / 3.0;
   double **pred;
-  int move;    // 0: only the SPH state is integrated, motion comes from another fix
+  int move;        // 0: only the SPH state is integrated, motion comes from another fix
+  int stepping;    // between initial_integrate() and final_integrate() of a step
+  // the bodies whose boundary particles another fix moves or leaves at rest (sorted, the
+  // same on every rank; check_boundary_motion())
+  std::vector<int> moved_bodies;
+  void check_boundary_motion();
   // scheme staggered: the force computation of a step first finds the rates at v^(n+1/2),
   // then (stagger_commit()) the state is advanced to n+1, then the forces are computed
   int staggered;
@@ -148,6 +158,9 @@ class FixESPHIntegrate : public Fix {
   double dtmin_warned;    // the dtmin last warned about (adapt_dt())
   // the largest cfl factor (and fixed step, in CFL estimates) without a warning
   static constexpr double CFL_SAFE = 0.6;
+  // share of the squared velocities of a body's boundary particles that their difference
+  // from the interpolated ones may reach (check_boundary_motion())
+  static constexpr double BND_MOTION_SHARE = 0.25;
   static constexpr int FIXED_DT_CHECK = 100;    // steps between checks of a fixed step
   double fingerprint(int);
   void wrapped_position(int, double *);

@@ -494,6 +494,28 @@ void PairESPHSolid::setup()
     if (state->rmass[i] == 0.0) nb++;
   MPI_Allreduce(&nb, &nboundary, 1, MPI_LMP_BIGINT, MPI_SUM, world);
 
+  // a run that starts afresh with bodies already engaged in contact, with an integrator that
+  // has recorded none (a data file written in contact): what only a restart file keeps is
+  // missing
+  if (resumed == FixESPHIntegrate::RESUME_NONE && contact != CONTACT_OFF && state->eng &&
+      fix_int->body_records.empty()) {
+    bigint neng = 0, nengall = 0;
+    for (int i = 0; i < nlocal; i++)
+      if (state->rmass[i] > 0.0 && state->eng[i] > 0.0) neng++;
+    MPI_Allreduce(&neng, &nengall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (nengall > 0 && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair esph/solid: {} real particles are engaged in contact with another "
+                     "body at the start of a run that does not continue a previous one (a data "
+                     "file written during contact?): the contact record (fix esph/integrate "
+                     "vector elements 4 to 6, compute esph/contact) starts at this run, and the "
+                     "integrator's prediction and the last force computation's contact "
+                     "geometry, which only restart files keep, are made afresh, so the run "
+                     "differs slightly from one that was not interrupted; for an exact "
+                     "continuation use write_restart and read_restart",
+                     nengall);
+  }
+
   // an unset switched viscosity (0, e.g. a new particle) starts at its ceiling: a shock
   // present at the start (bodies that touch at t = 0) is damped as without the switch
   if (vswitch_flag) {

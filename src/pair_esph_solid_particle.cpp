@@ -381,7 +381,10 @@ void PairESPHSolid::finalize(int eflag)
         if (bnd) store_normal(i);
         if (qcn >= 0) store_cone(i);
         if (eflag) {
-          const double ei = rmass[i] * q[Q_E] * units.energy;
+          // the internal energy at the end of the step, as the integrator will advance it
+          // with the rate just computed (not the prediction q[Q_E], whose rate is the last
+          // computation's)
+          const double ei = rmass[i] * fix_int->end_energy(i, de[i]);
           es += ei;
           if (eflag_atom) eatom[i] += ei;
         }

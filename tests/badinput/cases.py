@@ -359,9 +359,27 @@ CASES = [
                              R("fix_int", "fix int a esph/integrate"),
                              R("body_b", "set group b i_esph_body 1")],
      "error:rigid and of deformable", 2),
+    # fix move on the real particles of a rigid body alone: its boundary particles stayed
+    # behind, and a punch so driven pushed with a tenth of its force, without a message
+    ("pc_rigid_move_real_only",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"), A("fix_bnd", "variable massive atom mass>0.0"),
+      A("fix_bnd", "group real variable massive"), A("fix_bnd", "group rb intersect b real"),
+      A("velocity", "fix mv rb move linear -20 0 0")],
+     "error:do not move with its real particles", 2),
+    # the same with the whole body: the documented way
+    ("pc_rigid_move_whole_body",
+     [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
+      R("fix_int", "fix int a esph/integrate"), A("velocity", "fix mv b move linear -20 0 0")],
+     "runs"),
     ("pc_before_pair_style", [M("coeff", "pair")], "error:Pair_coeff command without a pair style"),
     # ---------------- fix esph/integrate ----------------
     ("fi_unknown_keyword", [K("fix_int", " nve")], "error:Unknown fix esph/integrate keyword"),
+    # a new integrator in the middle of a contact (as after read_data of a file written in
+    # contact): the contact record and the prediction start afresh, said once
+    ("fi_new_in_contact",
+     [A("run", "unfix int"), A("run", "fix int all esph/integrate"), A("run", "run 5")],
+     "warning:engaged in contact", 2),
     ("fi_cfl_missing", [K("fix_int", " cfl")], "error:missing argument"),
     ("fi_cfl_zero", [K("fix_int", " cfl 0")], "error:must be in (0,1]"),
     ("fi_cfl_above_one", [K("fix_int", " cfl 2")], "error:must be in (0,1]"),
@@ -678,6 +696,8 @@ CASES = [
      [B("run", "run 10"), B("run", "reset_timestep 1000 time $(time)")], "runs"),
     # write_data and read_data: the per-type masses ESPH never set are written as 1.0
     # (read_data rejects 0), the user's are kept
+    # (the base's blocks are in contact when the file is written: the run from it warns that
+    # the contact record and the prediction start afresh)
     ("rs_write_read_data",
      [B("run", "mass 2 3.0"), A("run", "write_data rt.data"), A("run", "clear"),
       A("run", "units si"), A("run", "atom_style atomic"), A("run", "atom_modify map array"),
@@ -686,7 +706,7 @@ CASES = [
                "ESPH_STRESS fix ESPH_NORMAL NULL ESPH_NORMAL"),
       A("run", PC + MG), A("run", "fix int all esph/integrate"), A("run", "timestep 5e-9"),
       A("run", FB + "spacing 1e-4"), A("run", "neighbor 2e-5 bin"),
-      A("run", "run 5")], "runs"),
+      A("run", "run 5")], "warning:engaged in contact"),
     ("rs_delete_atoms",
      [A("run", "delete_atoms group a compress no"), A("run", "run 5")],
      "error:define it again (unfix, then fix)"),
