@@ -344,12 +344,11 @@ void FixESPHIntegrate::setup(int /*vflag*/)
       !other_torques();
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
   energy_watch.setup(lmp, state, groupbit);
-  // the bodies whose boundary particles this fix does not move (check_boundary_motion())
+  // the bodies whose boundary particles this fix does not move (check_boundary_motion();
+  // global_set() sorts and unites)
   std::vector<int> mine;
   for (int i = 0; i < nlocal; i++)
     if (turns_at_end(i) && state->body) mine.push_back(state->body[i]);
-  std::sort(mine.begin(), mine.end());
-  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
   moved_bodies = ESPHCheck::global_set(lmp, mine);
   // (positions may have been changed between runs: the motion check starts afresh)
   moved_step = -1;
@@ -733,6 +732,8 @@ double FixESPHIntegrate::end_energy(int i, double dei) const
 {
   const int nint = (igroup == atom->firstgroup) ? atom->nfirst : atom->nlocal;
   if (!stepping || i >= nint || !(atom->mask[i] & groupbit)) return state->e[i];
+  // scheme staggered: the mean rate of the two passes, the rate pass's through its
+  // prediction e + dt de_1 (which migrates with the atom, unlike the pair's rates)
   if (staggered) return 0.5 * (state->e[i] + pred[i][P_E]) + dth * dei;
   return state->e[i] + dth * dei;
 }
@@ -873,9 +874,9 @@ void FixESPHIntegrate::final_integrate()
         }
         if (staggered) {
           // density, stress, h and alpha are at n+1 already (stagger_commit()); the internal
-          // energy takes the mean rate of the two passes, the rate pass's through its
-          // prediction e + dt de_1 (which migrates with the atom, unlike the pair's rates)
-          e[i] = 0.5 * (e[i] + pred[i][P_E]) + dth * de[i];
+          // energy as end_energy() (the one place of that rule, which the pair's energy
+          // tally uses too)
+          e[i] = end_energy(i, de[i]);
           continue;
         }
         advance_state(i, dth, 1);
