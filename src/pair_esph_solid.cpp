@@ -80,6 +80,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   dt_cfl = 0.0;
   gap_reach2 = 0.0;
   touch_on_run = 0;
+  surf_on = 1;
   dt_step = 0.0;
   dt_keep = 0;
   ncontact_pairs = ntouch_pairs = 0;
@@ -727,6 +728,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
     simd_split(bnd);
   }
   if (touch && !touch_first) update_touch(simd_active);
+  surf_on = surface_sums();
   pair_pass(bnd);
 
   if (force->newton_pair) {

@@ -130,6 +130,9 @@ class PairESPHSolid : public Pair {
   // bodies that touch (touch_key()), on every rank
   std::vector<int> touch_bodies;
   std::vector<long long> touch_pairs;
+  // the real particles take their surface sums (normal, depth, gap, cone) in this
+  // computation: under contact/gap touch only while some body touches (surface_sums())
+  int surf_on;
   // ... per atom: marked for a look at its cell, and its cell's frame (touch_frames())
   std::vector<double> touch_mark, touch_frame;
   // the spacings of the bodies (body, spacing; sorted), the smallest and largest
@@ -291,6 +294,7 @@ class PairESPHSolid : public Pair {
   void update_touch(int);
   void touch_frames(double, const double *);
   bool touch_body(int) const;
+  int surface_sums() const;
   // bodies a and b touch: their real particles may interact (in the pair loop, per
   // cross-body pair: inline)
   bool touch_pair_on(int a, int b) const

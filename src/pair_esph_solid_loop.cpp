@@ -89,6 +89,8 @@ void PairESPHSolid::pair_loop(LoopOut &out)
   constexpr int CONE = BND && (EXTRA & (EXTRA_CONE | EXTRA_FRICTION | EXTRA_RIGID));
   const int qcn = CONE ? qcol_n : -1;
   const int couple = BND && couple_on;
+  // the real particles' surface sums (surface_sums())
+  const int surf = surf_on;
   if (AST) {
     double wdp, dwdp;
     kernel_eval(kernel, dim, norm0, hinv0, astress_dp, wdp, dwdp);
@@ -223,7 +225,7 @@ void PairESPHSolid::pair_loop(LoopOut &out)
             }
             ak[B_WSUM] += Vp * w;
           }
-          if (p < nlocal || newton_pair || p == i) {
+          if (surf && (p < nlocal || newton_pair || p == i)) {
             add_normal_sums(acc[p], w, sgn, dx, qk + Q_N);
             if (solid) {
               add_gap_sums(acc[p], w, qk, dt);

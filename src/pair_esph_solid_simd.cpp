@@ -674,6 +674,8 @@ void PairESPHSolid::bulk_pass(LoopOut &out)
   c.cone = c.solid && (qcol_n >= 0);
   c.norm = kernel_norm(kernel, dim, h0);
   const int corr = (correct_flag == CORRECT_RATE);
+  // the real particles' sums over their boundary particles only where needed (surface_sums())
+  const int surf = surf_on;
 
   const int ncols = acc_cols;
   for (int ii = out.iifrom; ii < out.iito; ii++) {
@@ -689,9 +691,9 @@ void PairESPHSolid::bulk_pass(LoopOut &out)
       continue;
     }
     if (corr)
-      bulk_atom<1>(c, i, partners(i), nbulk[i], nbnd[i], out.f[i], out.acc[i]);
+      bulk_atom<1>(c, i, partners(i), nbulk[i], surf ? nbnd[i] : 0, out.f[i], out.acc[i]);
     else
-      bulk_atom<0>(c, i, partners(i), nbulk[i], nbnd[i], out.f[i], out.acc[i]);
+      bulk_atom<0>(c, i, partners(i), nbulk[i], surf ? nbnd[i] : 0, out.f[i], out.acc[i]);
   }
 #else
   (void) out;
