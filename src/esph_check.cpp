@@ -404,8 +404,8 @@ void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos,
     // (the spacing of the particle's body: 0 without fix esph/boundary)
     const double spacing = spacing_of(st->body ? st->body[i] : 0);
     const double vol0 = (spacing > 0.0) ? pow(spacing, dim) : 0.0;
-    const double r[2] = {st->rho[i] / eos[type[i]].rho0,
-                         vol0 > 0.0 ? st->rmass[i] / st->rho[i] / vol0 : 1.0};
+    const double rho0 = eos[type[i]].rho0;
+    const double r[2] = {st->rho[i] / rho0, vol0 > 0.0 ? st->rmass[i] / rho0 / vol0 : 1.0};
     for (int k = 0; k < 2; k++)
       if (r[k] > off[k] || r[k] < 1.0 / off[k]) {
         n[k]++;
@@ -426,10 +426,12 @@ void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos,
                         nall[0], loall[0], hiall[0]);
   if (nall[1] > 0)
     lmp->error->warning(FLERR,
-                        "{} real particles have a volume m / d_esph_rho of {:.3g} to {:.3g} x "
-                        "spacing^{} of fix esph/boundary (a particle's volume is about that): "
-                        "check the masses, rho0 x spacing^{} in the mass unit of the units style",
-                        nall[1], loall[1], hiall[1], dim, dim);
+                        "{} real particles have a reference volume m / rho0 of {:.3g} to {:.3g} "
+                        "x spacing^{} of fix esph/boundary (on a simple cubic lattice it is "
+                        "spacing^{}): a particle's mass is rho0 x spacing^{} of its type in the "
+                        "mass unit of the units style; another mass makes the material as much "
+                        "stiffer or softer, which the time step does not see",
+                        nall[1], loall[1], hiall[1], dim, dim, dim);
 }
 
 /* ---------------------------------------------------------------------- */

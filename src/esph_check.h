@@ -103,8 +103,9 @@ namespace ESPHCheck {
 
   // warnings at the start of a run: real particles whose density is far from the rho0 of
   // their type (outside [1/DENSITY_OFF, DENSITY_OFF] x rho0: pair_coeff rho0 changed between
-  // runs), and, with spacing > 0 (fix esph/boundary), whose volume m / rho is far from
-  // spacing^dim (outside [1/VOLUME_OFF, VOLUME_OFF]: a mass in the wrong unit)
+  // runs), and, with spacing > 0 (fix esph/boundary), whose reference volume m / rho0 is
+  // not spacing^dim (outside [1/VOLUME_OFF, VOLUME_OFF]: a mass in the wrong unit, or
+  // another material's: the stiffness scales with the mass, and the CFL step does not see it)
   void volumes(LAMMPS *lmp, ESPHState *state, const ESPH::EOS *eos,
                const std::function<double(int)> &spacing_of, int dim);
 
@@ -115,7 +116,7 @@ namespace ESPHCheck {
   void smoothing_length(LAMMPS *lmp, double h0, double hmax, int hvar_flag, double spacing);
 
   static constexpr double DENSITY_OFF = 1.5;
-  static constexpr double VOLUME_OFF = 3.0;
+  static constexpr double VOLUME_OFF = 1.05;
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
   // touching bodies are a spacing apart, bodies that overlap by half a spacing or more

@@ -45,6 +45,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -61,6 +62,11 @@ static constexpr double SURFACE_OFFSET = 0.05;
 // placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
 // diagonals of simple cubic
 static constexpr double NEAR_SHELL = 1.5;
+// existing boundary particles reused: each place where the fix would put one has one of the
+// same body within COVER_REACH spacings (a hole: the nearest about one spacing away)
+static constexpr double COVER_REACH = 0.6;
+// the pieces of the bodies are told apart with body IDs below 2^PIECE_BODY_BITS
+static constexpr int PIECE_BODY_BITS = 22;
 // a particle whose nearest neighbours' second moment M has det M < THIN_DET tr^3 and a sum
 // of 2x2 principal minors > THIN_PLANE tr^2 has them in a plane, not on a line (a plane:
 // det 0, minors >= tr^2 / 4; a line: both 0; a lattice body's inside: det tr^3 / 27)
@@ -491,13 +497,102 @@ void FixESPHBoundary::generate()
                "Fix esph/boundary: all {} particles of group {} have zero mass; set the masses "
                "(and body IDs) of the real particles before defining this fix",
                ngroup_all, group->names[igroup]);
+  std::vector<double> newx, newn;
+  std::vector<int> src;
   if (nexist_all > 0) {
     if (comm->me == 0)
       utils::logmesg(lmp, "Fix esph/boundary: using {} existing boundary particles\n", nexist_all);
     reused = nexist_all;
+    // they must still cover the surface this fix would make
+    find_surface(newx, newn, src);
+    check_coverage(newx, src);
     return;
   }
+  find_surface(newx, newn, src);
+  if (fit > 0.0) fit_normals(newx, newn, src);
+  if (!region_ids.empty()) region_normals(newx, newn, src);
 
+  // create the boundary particles; they migrate to their owners at the next setup
+  const double *lo = domain->boxlo, *hi = domain->boxhi;
+  const int per[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  const int nprev = atom->nlocal;
+  const int nnew = src.size();
+  for (int k = 0; k < nnew; k++) {
+    double xnew[3] = {newx[3 * k], newx[3 * k + 1], newx[3 * k + 2]};
+    for (int d = 0; d < 3; d++)
+      if (!per[d] && (xnew[d] < lo[d] || xnew[d] >= hi[d]))
+        error->one(FLERR,
+                   "Fix esph/boundary: boundary particle of atom {} at ({} {} {}) lies outside the "
+                   "non-periodic box; enlarge the box by half a spacing around the bodies",
+                   atom->tag[src[k]], xnew[0], xnew[1], xnew[2]);
+    const int s = src[k];
+    atom->avec->create_atom(btype > 0 ? btype : atom->type[s], xnew);
+  }
+  atom->data_fix_compute_variable(nprev, atom->nlocal);
+  state->fetch();
+  for (int k = 0; k < nnew; k++) {
+    const int m = nprev + k;
+    const int s = src[k];
+    atom->mask[m] = atom->mask[s];
+    atom->image[m] = atom->image[s];
+    for (int d = 0; d < 3; d++) {
+      atom->v[m][d] = atom->v[s][d];
+      state->n[m][d] = newn[3 * k + d];
+    }
+    state->rmass[m] = 0.0;
+    state->body[m] = state->body[s];
+    state->rho[m] = 0.0;
+    state->e[m] = 0.0;
+    state->h[m] = state->h[s];
+    state->depth[m] = 0.0;
+    state->gap[m] = ESPH::GAP_NONE;
+    state->gapv[m] = 0.0;
+    state->eng[m] = 0.0;
+    for (int d = 0; d < 6; d++) state->s[m][d] = 0.0;
+  }
+
+  bigint nblocal = atom->nlocal;
+  MPI_Allreduce(&nblocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->tag_enable) atom->tag_extend();
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  bigint nn = nnew;
+  MPI_Allreduce(&nn, &ncreated, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix esph/boundary: created {} boundary particles\n", ncreated);
+}
+
+/* ----------------------------------------------------------------------
+   the root of atom ID t in the union-find up (t added as a piece of its
+   own when new), the paths on the way pointed at it
+------------------------------------------------------------------------- */
+
+static tagint piece_root(std::unordered_map<tagint, tagint> &up, tagint t)
+{
+  tagint r = up.emplace(t, t).first->second;
+  while (up[r] != r) r = up[r];
+  while (up[t] != r) {
+    const tagint next = up[t];
+    up[t] = r;
+    t = next;
+  }
+  return r;
+}
+
+/* ----------------------------------------------------------------------
+   the surface particles of the group's real particles (detection of
+   generate()): for each, where its boundary particle goes (newx), its
+   normal (newn) and the particle (src); the warnings on the arrangement
+   (sheets one particle thick, another lattice, a body in pieces)
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::find_surface(std::vector<double> &newx, std::vector<double> &newn,
+                                   std::vector<int> &src)
+{
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
   const int dim = domain->dimension;
   const double cut = ESPH::KERNEL_SUPPORT * spacing;     // detection support
   const double hn = smooth * spacing;                    // normal kernel h
@@ -570,8 +665,15 @@ void FixESPHBoundary::generate()
   const double hinv = 1.0 / spacing;
   const int reach = (int) ceil(reach_len / cut);
 
-  std::vector<double> newx, newn, nearest, planar;
-  std::vector<int> src;
+  std::vector<double> nearest, planar;
+  // the pieces of the bodies: union-find of the real particles (by atom ID) over their nearest
+  // neighbours of the same body, the root of a piece its smallest ID (check_pieces())
+  std::unordered_map<tagint, tagint> up;
+  auto join = [&up](tagint a, tagint b) {
+    const tagint ra = piece_root(up, a), rb = piece_root(up, b);
+    if (ra < rb) up[rb] = ra;
+    if (rb < ra) up[ra] = rb;
+  };
   bigint nthin = 0;
   tagint thin_tag = 0;
   // particles whose nearest neighbours span the space, and those of them without a simple
@@ -597,8 +699,10 @@ void FixESPHBoundary::generate()
             if (p.body != bi) continue;
             const double d[3] = {p.x[0] - xi[0], p.x[1] - xi[1], p.x[2] - xi[2]};
             const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (r > 0.0 && r < NEAR_SHELL * spacing)
+            if (r > 0.0 && r < NEAR_SHELL * spacing) {
               nearest.insert(nearest.end(), {d[0], d[1], d[2]});
+              join(atom->tag[i], p.tag);
+            }
             double w, dw;
             if (ESPH::kernel_eval(ESPH::CUBIC, 3, normn, 1.0 / hn, r, w, dw)) {
               cn[0] += w * d[0];
@@ -682,6 +786,7 @@ void FixESPHBoundary::generate()
     src.push_back(i);
   }
 
+  check_pieces(up, blo, bhi, reach_len);
   {
     bigint thin_all;
     MPI_Allreduce(&nthin, &thin_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
@@ -715,57 +820,184 @@ void FixESPHBoundary::generate()
                      dim == 3 ? "simple cubic" : "square", dim == 3 ? "three" : "two",
                      dim == 3 ? "simple cubic" : "square", spacing, dim == 3 ? "sc" : "sq");
   }
-  if (fit > 0.0) fit_normals(newx, newn, src);
-  if (!region_ids.empty()) region_normals(newx, newn, src);
+}
 
-  // create the boundary particles; they migrate to their owners at the next setup
-  const int nprev = atom->nlocal;
-  const int nnew = src.size();
-  for (int k = 0; k < nnew; k++) {
-    double xnew[3] = {newx[3 * k], newx[3 * k + 1], newx[3 * k + 2]};
-    for (int d = 0; d < 3; d++)
-      if (!per[d] && (xnew[d] < lo[d] || xnew[d] >= hi[d]))
-        error->one(FLERR,
-                   "Fix esph/boundary: boundary particle of atom {} at ({} {} {}) lies outside the "
-                   "non-periodic box; enlarge the box by half a spacing around the bodies",
-                   atom->tag[src[k]], xnew[0], xnew[1], xnew[2]);
-    const int s = src[k];
-    atom->avec->create_atom(btype > 0 ? btype : atom->type[s], xnew);
-  }
-  atom->data_fix_compute_variable(nprev, atom->nlocal);
-  state->fetch();
-  for (int k = 0; k < nnew; k++) {
-    const int m = nprev + k;
-    const int s = src[k];
-    atom->mask[m] = atom->mask[s];
-    atom->image[m] = atom->image[s];
-    for (int d = 0; d < 3; d++) {
-      atom->v[m][d] = atom->v[s][d];
-      state->n[m][d] = newn[3 * k + d];
+/* ----------------------------------------------------------------------
+   a body in pieces: the real particles of a body that no chain of nearest
+   neighbours (within NEAR_SHELL spacings) joins. Each piece gets its smallest
+   atom ID, from the pieces on this rank (the union-find up of its own
+   particles and those of the halo, find_surface()) and those of the ranks
+   around, exchanged until no label changes (collective). Pieces of one body
+   that meet interact as one body, without the contact rule: a WARNING
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::check_pieces(std::unordered_map<tagint, tagint> &up, const double *blo,
+                                   const double *bhi, double reach)
+{
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  // the smallest ID known for each piece (by its root here)
+  std::unordered_map<tagint, tagint> label;
+  auto label_of = [&](tagint t) {
+    const tagint r = piece_root(up, t);
+    return label.emplace(r, r).first->second;
+  };
+  while (true) {
+    std::vector<double> mine;
+    for (int i = 0; i < nlocal; i++) {
+      if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
+      double img[27][3];
+      const int nimg = periodic_images(domain, atom->x[i], reach, img);
+      const tagint lab = label_of(atom->tag[i]);
+      for (int m = 0; m < nimg; m++)
+        mine.insert(mine.end(),
+                    {img[m][0], img[m][1], img[m][2], (double) atom->tag[i], (double) lab});
     }
-    state->rmass[m] = 0.0;
-    state->body[m] = state->body[s];
-    state->rho[m] = 0.0;
-    state->e[m] = 0.0;
-    state->h[m] = state->h[s];
-    state->depth[m] = 0.0;
-    state->gap[m] = ESPH::GAP_NONE;
-    state->gapv[m] = 0.0;
-    state->eng[m] = 0.0;
-    for (int d = 0; d < 6; d++) state->s[m][d] = 0.0;
+    const auto got = halo_exchange(mine, 5, blo, bhi, reach);
+    int changed = 0, changed_all;
+    for (size_t k = 0; k < got.size(); k += 5) {
+      const auto t = (tagint) got[k + 3];
+      if (up.find(t) == up.end()) continue;
+      const auto lab = (tagint) got[k + 4];
+      tagint &cur = label.emplace(piece_root(up, t), piece_root(up, t)).first->second;
+      if (lab < cur) {
+        cur = lab;
+        changed = 1;
+      }
+    }
+    MPI_Allreduce(&changed, &changed_all, 1, MPI_INT, MPI_MAX, world);
+    if (!changed_all) break;
   }
+  // the pieces of every body, (body, smallest ID) pairs
+  std::vector<long long> keys;
+  int fits = 1, fits_all;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
+    const tagint lab = label_of(atom->tag[i]);
+    const int b = state->body[i];
+    if (b < 0 || b >= (1 << PIECE_BODY_BITS) ||
+        (long long) lab >= (1LL << (62 - PIECE_BODY_BITS))) {
+      fits = 0;
+      continue;
+    }
+    keys.push_back(((long long) b << (62 - PIECE_BODY_BITS)) | (long long) lab);
+  }
+  MPI_Allreduce(&fits, &fits_all, 1, MPI_INT, MPI_MIN, world);
+  // (body IDs or atom IDs beyond the key's bits: not checked)
+  if (!fits_all) return;
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  keys = ESPHCheck::global_set(lmp, keys);
+  std::string list;
+  int nbodies = 0;
+  for (size_t k = 0; k < keys.size();) {
+    const long long b = keys[k] >> (62 - PIECE_BODY_BITS);
+    size_t e = k;
+    while (e < keys.size() && (keys[e] >> (62 - PIECE_BODY_BITS)) == b) e++;
+    if (e - k > 1) {
+      if (nbodies < 3) {
+        const long long mask_id = ((long long) 1 << (62 - PIECE_BODY_BITS)) - 1;
+        list +=
+            fmt::format("{}body {} in {} pieces (atoms {} and {} in two of them)",
+                        nbodies ? "; " : "", b, e - k, keys[k] & mask_id, keys[k + 1] & mask_id);
+      }
+      nbodies++;
+    }
+    k = e;
+  }
+  if (nbodies > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix esph/boundary: {} of group {} in pieces that no particles within {} "
+                   "spacings of each other join: {}. Pieces of one body interact as one "
+                   "body when they meet, with no contact between them (no contact time, force "
+                   "or rebound of their own); give each piece its own body ID (i_esph_body)",
+                   nbodies > 1 ? fmt::format("{} bodies", nbodies) : std::string("a body"),
+                   group->names[igroup], NEAR_SHELL, list);
+}
 
-  bigint nblocal = atom->nlocal;
-  MPI_Allreduce(&nblocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->tag_enable) atom->tag_extend();
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
+/* ----------------------------------------------------------------------
+   existing boundary particles that the fix uses (none made): the places
+   where it would put them (newx, for the surface particles src of this
+   rank) must each have one of the same body within COVER_REACH spacings;
+   a place without one is a hole in the surface (boundary particles
+   deleted, or a body changed since they were made), through which other
+   bodies pass unseen (collective; an ERROR)
+------------------------------------------------------------------------- */
+
+void FixESPHBoundary::check_coverage(const std::vector<double> &newx, const std::vector<int> &src)
+{
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  const double reach = COVER_REACH * spacing;
+  // the places' box; the existing boundary particles (and their periodic images) of this rank
+  // and of the ranks around within reach of it
+  double blo[3] = {1.0e300, 1.0e300, 1.0e300}, bhi[3] = {-1.0e300, -1.0e300, -1.0e300};
+  for (size_t k = 0; k < src.size(); k++)
+    for (int d = 0; d < 3; d++) {
+      blo[d] = MIN(blo[d], newx[3 * k + d]);
+      bhi[d] = MAX(bhi[d], newx[3 * k + d]);
+    }
+  std::vector<double> have;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || state->rmass[i] != 0.0) continue;
+    double img[27][3];
+    const int nimg = periodic_images(domain, atom->x[i], reach, img);
+    for (int m = 0; m < nimg; m++)
+      have.insert(have.end(), {img[m][0], img[m][1], img[m][2], (double) state->body[i]});
   }
-  bigint nn = nnew;
-  MPI_Allreduce(&nn, &ncreated, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (comm->me == 0)
-    utils::logmesg(lmp, "Fix esph/boundary: created {} boundary particles\n", ncreated);
+  const auto got = halo_exchange(have, 4, blo, bhi, reach);
+  have.insert(have.end(), got.begin(), got.end());
+  const int nhave = have.size() / 4;
+  CellGrid grid(domain->boxlo, reach);
+  grid.build(
+      nhave,
+      [&have](int k) {
+        return &have[4 * k];
+      },
+      [](int k) {
+        return (tagint) k;
+      });
+  bigint nopen = 0;
+  tagint first = MAXTAGINT;
+  for (size_t k = 0; k < src.size(); k++) {
+    const double *p = &newx[3 * k];
+    const double b = state->body[src[k]];
+    long long c[3];
+    grid.cell_of(p, c);
+    bool covered = false;
+    for (int a = -1; a <= 1 && !covered; a++)
+      for (int e = -1; e <= 1 && !covered; e++)
+        for (int f = -1; f <= 1 && !covered; f++) {
+          const std::vector<int> *cell = grid.at(c, a, e, f);
+          if (!cell) continue;
+          for (int m : *cell) {
+            const double *q = &have[4 * m];
+            if (q[3] != b) continue;
+            const double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach) {
+              covered = true;
+              break;
+            }
+          }
+        }
+    if (covered) continue;
+    nopen++;
+    first = MIN(first, atom->tag[src[k]]);
+  }
+  bigint counts[2] = {nopen, (bigint) src.size()}, counts_all[2];
+  MPI_Allreduce(counts, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (counts_all[0] == 0) return;
+  tagint tfirst;
+  MPI_Allreduce(&first, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  error->all(FLERR,
+             "Fix esph/boundary: {} of the {} places on the surfaces of group {} where the fix "
+             "puts boundary particles (e.g. at atom {}) have no existing boundary particle of "
+             "their body within {} spacings: the fix uses the {} boundary particles it found "
+             "and makes none, so the surface has holes there (boundary particles deleted, or "
+             "real particles added or moved since they were made), through which other bodies "
+             "pass. Delete all boundary particles (a group of the zero-mass particles, "
+             "delete_atoms) before defining the fix, so that it makes them anew",
+             counts_all[0], counts_all[1], group->names[igroup], tfirst, COVER_REACH, reused);
 }
 
 /* ----------------------------------------------------------------------

@@ -24,6 +24,7 @@ FixStyle(esph/boundary,FixESPHBoundary);
 
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -61,6 +62,9 @@ class FixESPHBoundary : public Fix {
   std::vector<std::string> region_ids;
 
   void generate();
+  void find_surface(std::vector<double> &, std::vector<double> &, std::vector<int> &);
+  void check_pieces(std::unordered_map<tagint, tagint> &, const double *, const double *, double);
+  void check_coverage(const std::vector<double> &, const std::vector<int> &);
   void fit_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
   void region_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
   std::vector<double> halo_exchange(const std::vector<double> &, int, const double *,

@@ -459,8 +459,10 @@ void FixESPHIntegrate::check_fixed_dt()
   if (comm->me == 0)
     error->warning(FLERR,
                    "Fix esph/integrate: at step {} the time step {} is {:.3g} times the CFL "
-                   "estimate {:.4g} (vector element 3; it falls where the material stiffens "
-                   "under compression); above {} the integration gains energy, the faster the "
+                   "estimate {:.4g} (vector element 3: the sound speed's limit, which falls "
+                   "where the material stiffens under compression, or with pair esph/solid heat "
+                   "the heat diffusion's, h^2 / (2 D zeta)); above {} the integration gains "
+                   "energy, the faster the "
                    "larger the step (nine-fold in 2000 steps at 0.7, lost atoms at 1.0): use "
                    "fix esph/integrate cfl 0.3 or a time step of at most {:.4g}",
                    update->ntimestep, update->dt, ratio, dt, CFL_SAFE, 0.3 * dt);

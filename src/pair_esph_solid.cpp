@@ -41,6 +41,7 @@
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+#include "pair_hybrid.h"
 #include "update.h"
 
 #include <algorithm>
@@ -114,6 +115,11 @@ void PairESPHSolid::init_style()
                ustyle);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
+  if ((offset_flag || tail_flag) && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid has no cutoff energy to shift and no long-range tail: "
+                   "pair_modify {} has no effect; drop it",
+                   offset_flag ? "shift yes" : "tail yes");
   // the per-type masses of atom styles that have them are never used (the per-atom masses
   // are), but write_data writes them and read_data rejects a mass of 0: the types whose
   // mass was not set get 1.0, so that a data file of an ESPH system can be read back
@@ -252,10 +258,14 @@ bool PairESPHSolid::simd_fits()
   if (comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid simd yes: a full neighbor list of about {} neighbors per "
-                   "atom (h = {:.3g} spacings) would exceed neigh_modify one {}: every pair goes "
-                   "through the scalar loop; set neigh_modify one {} to keep the vector pass, "
-                   "or simd no to silence this",
-                   need, h0 / sp, neighbor->oneatom, need);
+                   "atom (h = {:.3g} spacings, neighbor skin {:.3g} spacings) would exceed "
+                   "neigh_modify one {}: every pair goes through the scalar loop; {}set "
+                   "neigh_modify one {} to keep the vector pass, or simd no to silence this",
+                   need, h0 / sp, neighbor->skin / sp, neighbor->oneatom,
+                   neighbor->skin > h0 ? "a skin that large is a units style's default "
+                                         "(the neighbor command sets it: about 0.2 h is usual); "
+                                       : "",
+                   need);
   return false;
 }
 
@@ -434,6 +444,42 @@ void PairESPHSolid::check_hybrid()
                    "falls apart): give those pairs to esph/solid (pair_coeff I J esph/solid, or "
                    "no pair_coeff for them) or use pair_style hybrid/overlay",
                    force->pair_style, pairs, npairs > 8 ? ", ..." : "");
+  // hybrid/overlay: another sub-style on pairs of esph/solid materials acts on their boundary
+  // particles too (no mass; they coincide where two faces touch)
+  auto *hybrid = dynamic_cast<PairHybrid *>(force->pair);
+  std::vector<int> btypes;
+  state->fetch();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (state->rmass[i] == 0.0) btypes.push_back(atom->type[i]);
+  btypes = ESPHCheck::global_set(lmp, btypes);
+  auto has_bnd = [&btypes](int t) {
+    return std::binary_search(btypes.begin(), btypes.end(), t);
+  };
+  std::string other;
+  if (hybrid && force->pair_map)
+    for (int i = 1; i <= nt && other.empty(); i++)
+      for (int j = i; j <= nt && other.empty(); j++) {
+        if (!setflag[i][i] || !setflag[j][j] || !(has_bnd(i) || has_bnd(j))) continue;
+        for (const auto &kv : *force->pair_map) {
+          // (zero computes no forces)
+          if (utils::strmatch(kv.first, "^esph/solid") || kv.first == "zero") continue;
+          std::vector<char> name(kv.first.begin(), kv.first.end());
+          name.push_back('\0');
+          if (hybrid->check_ijtype(i, j, name.data())) {
+            other = fmt::format("{} on types {} {}", kv.first, i, j);
+            break;
+          }
+        }
+      }
+  if (!other.empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid under pair_style {}: sub-style {}, which are esph/solid "
+                   "materials with boundary particles: it acts on those too, which have no mass "
+                   "(its forces on them do nothing but move them off the surface) and coincide "
+                   "where two faces touch (a force at zero distance: lost atoms); give the "
+                   "boundary particles a type of their own (fix esph/boundary ... type) and "
+                   "leave that type out of the other sub-style",
+                   force->pair_style, other);
   hybrid_warned = 1;
 }
 

@@ -93,6 +93,9 @@ class PairESPHSolid : public Pair {
   // heavy body's, on its own small mass; the step of the pair is visc_cfl h_l / (CROSS_DT_K
   // c_L,heavy sqrt(m_heavy / m_light) + |v_l|) (measured: cross_dt())
   static constexpr double CROSS_DT_K = 0.6;
+  // a boundary particle whose body's real particles lie less than this many spacings behind
+  // it (about half a spacing on a surface) was left behind by its body (left_behind())
+  static constexpr double SURFACE_LEFT = 0.15;
   int vswitch_flag;      // Morris-Monaghan switch: per-particle alpha_i (d_esph_alpha)
   double vswitch_min;    // its floor alpha_min (the ceiling is alpha)
   double vswitch_l;      // its decay constant l: tau_i = h_i / (l c_i)
@@ -320,6 +323,7 @@ class PairESPHSolid : public Pair {
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
+  void left_behind(bigint, tagint, double);
   void store_cone(int);
   void artificial_stress();
   void atom_contact_clear();

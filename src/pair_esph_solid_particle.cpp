@@ -235,6 +235,15 @@ void PairESPHSolid::hoist()
       const auto val = [](double x) {
         return std::isfinite(x) ? fmt::format("{}", x) : std::string("not finite");
       };
+      // a density of exactly 0: the state was never set up (the start of a run sets
+      // d_esph_rho = 0 to rho0); rerun does not start a run
+      if (rho == 0.0)
+        error->one(FLERR, Error::NOLASTLINE,
+                   "Pair esph/solid: atom {} (type {}) has density d_esph_rho = 0 at step {}: "
+                   "the state of the particles is set up at the start of a run (a density of "
+                   "0 becomes rho0 of the type), and this force computation comes before any "
+                   "run (rerun as the first run?); give run 0 first",
+                   atom->tag[i], atom->type[i], update->ntimestep);
       error->one(FLERR, Error::NOLASTLINE,
                  "Pair esph/solid: atom {} (type {}) has a non-finite state at step {}: "
                  "density {}, specific energy {}, pressure {} and squared bulk sound speed {} "
@@ -306,6 +315,16 @@ void PairESPHSolid::finalize(int eflag)
 
   std::vector<double> esum(nthreads, 0.0);
   double *const esum_t = esum.data();
+  // per chunk: the boundary particles that lie less than SURFACE_LEFT spacings in front of
+  // their body's real particles (left_behind()), the first of them and its depth
+  const double shallow = SURFACE_LEFT * (boundary_spacing() > 0.0 ? boundary_spacing() : h0);
+  std::vector<bigint> nleft(nthreads, 0);
+  std::vector<tagint> left_tag(nthreads, MAXTAGINT);
+  std::vector<double> left_depth(nthreads, 0.0);
+  bigint *const nleft_t = nleft.data();
+  tagint *const left_tag_t = left_tag.data();
+  double *const left_depth_t = left_depth.data();
+  const tagint *tag = atom->tag;
   double **pred = pred_valid ? fix_int->pred : nullptr;
   double **drec = recon_flag ? state->drec : nullptr;
   const int ncols = acc_cols;
@@ -421,6 +440,16 @@ void PairESPHSolid::finalize(int eflag)
           double vk[3];
           for (int r = 0; r < 3; r++)
             vk[r] = vbar[r] - (Wk(r, 0) * xi[0] + Wk(r, 1) * xi[1] + Wk(r, 2) * xi[2]);
+          // how far the Shepard mean of its real particles lies behind it along its normal
+          const double *nk = state->n[i];
+          const double depth = -(xi[0] * nk[0] + xi[1] * nk[1] + xi[2] * nk[2]);
+          if (depth < shallow) {
+            nleft_t[tid]++;
+            if (tag[i] < left_tag_t[tid]) {
+              left_tag_t[tid] = tag[i];
+              left_depth_t[tid] = depth;
+            }
+          }
           bvel[i][0] = vk[0];
           bvel[i][1] = vk[1];
           bvel[i][2] = vk[2];
@@ -439,8 +468,56 @@ void PairESPHSolid::finalize(int eflag)
   });
   if (eflag_global)
     for (int t = 0; t < nthreads; t++) eng_vdwl += esum[t];
+  // (with each new neighbour list: often enough, and the same step on every rank)
+  if (bnd && neighbor->ago == 0) {
+    bigint n = 0;
+    tagint first = MAXTAGINT;
+    double depth = 0.0;
+    for (int t = 0; t < nthreads; t++) {
+      n += nleft[t];
+      if (left_tag[t] < first) {
+        first = left_tag[t];
+        depth = left_depth[t];
+      }
+    }
+    left_behind(n, first, depth);
+  }
   if (bnd) normals_valid = 1;
   if (bnd && turn_body) turn_with_bodies();
+}
+
+/* ----------------------------------------------------------------------
+   a boundary particle lies about half a spacing in front of its body's
+   real particles along its normal (on a face of a lattice body the Shepard
+   mean of those in its support 0.52 spacings behind it; 0.44 and more in
+   the examples, also on staircases, in impacts and spins). One with that
+   mean less than SURFACE_LEFT spacings behind it was left behind: the
+   real particles were moved without their boundary particles (fix
+   recenter or displace_atoms on the real particles alone: the contact
+   then acts at a surface off the body). n such particles on this rank,
+   the first, its depth (collective; an ERROR)
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::left_behind(bigint n, tagint first, double depth)
+{
+  bigint nall;
+  MPI_Allreduce(&n, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nall == 0) return;
+  tagint tfirst;
+  MPI_Allreduce(&first, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (first != tfirst) return;
+  const double s = boundary_spacing() > 0.0 ? boundary_spacing() : h0;
+  const int i = atom->map(first);
+  error->one(FLERR, Error::NOLASTLINE,
+             "Pair esph/solid: at step {} {} boundary particles (e.g. atom {} of body {}, "
+             "{:.3g} spacings) lie less than {} spacings in front of their body's real "
+             "particles (a surface lies about half a spacing out): the real particles were moved "
+             "without their boundary particles (e.g. fix recenter, displace_atoms, set or fix move "
+             "on the real particles alone; apply such commands to all atoms of the body, boundary "
+             "particles included: fix recenter ... shift all), or two pieces of one body met (fix "
+             "esph/boundary warns of such bodies: give each piece its own i_esph_body); the body's "
+             "contact surface is no longer where its particles are",
+             update->ntimestep, nall, first, i >= 0 ? state->body[i] : 0, depth / s, SURFACE_LEFT);
 }
 
 /* ----------------------------------------------------------------------

@@ -196,7 +196,21 @@ CASES = [
      "error:a body added since they were made"),
     # masses and densities that do not fit the particle spacing or rho0 (warnings at setup)
     ("pc_mass_heavy_body", [R("mass", "set group all mass 7.85e-9"), A("mass", "set group b mass 3.14e-8")],
-     "warning:have a volume m / d_esph_rho of 4 to 4 x"),
+     "warning:have a reference volume m / rho0 of 4 to 4 x"),
+    # aluminium given iron's particle mass: a material 2.9 times stiffer than its rho0 says,
+    # which the CFL step does not see (the run gained energy and blew up, silently at first)
+    ("pc_mass_of_other_material",
+     [R("coeff", "pair_coeff 1 1 rho0 7850 shear 80e9 eos mie/gruneisen 3574 1.92 1.69"),
+      A("coeff", "pair_coeff 2 2 rho0 2703 shear 27.6e9 eos mie/gruneisen 5240 1.40 1.97")],
+     "warning:have a reference volume m / rho0 of 2.9 to 2.9 x"),
+    # pair_modify options that mean nothing to the pair style
+    ("pc_pair_modify_shift", [A("coeff", "pair_modify shift yes")], "warning:has no effect"),
+    ("pc_pair_modify_tail", [A("coeff", "pair_modify tail yes")], "warning:has no effect"),
+    # rerun as the first run: the state was never set up by a run (density 0)
+    ("rr_rerun_before_any_run",
+     [R("run", "write_dump all custom rr.dump id x y z vx vy vz"),
+      A("run", "rerun rr.dump dump x y z vx vy vz")],
+     "error:give run 0 first"),
     ("pc_rho0_changed_between_runs",
      [A("run", "pair_coeff * * rho0 2700 shear 26e9 eos linear 75e9"), A("run", "run 2")],
      "warning:x the rho0 of their type"),
@@ -367,6 +381,33 @@ CASES = [
       A("fix_bnd", "group real variable massive"), A("fix_bnd", "group rb intersect b real"),
       A("velocity", "fix mv rb move linear -20 0 0")],
      "error:do not move with its real particles", 2),
+    # fix recenter on the real particles alone shifts them away from their boundary particles
+    # (its shift group is its own); with shift all the whole bodies move
+    ("pc_recenter_real_only",
+     [A("fix_bnd", "variable massive atom mass>0.0"), A("fix_bnd", "group real variable massive"),
+      A("velocity", "fix rc real recenter INIT INIT INIT"), R("run", "run 1000")],
+     "error:lie less than 0.15 spacings in front of their body's real", 2),
+    ("pc_recenter_shift_all",
+     [A("fix_bnd", "variable massive atom mass>0.0"), A("fix_bnd", "group real variable massive"),
+      A("velocity", "fix rc real recenter INIT INIT INIT shift all"), R("run", "run 1000")],
+     "runs"),
+    # a face's boundary particles deleted and fix esph/boundary defined again: it reuses the
+    # rest, and the surface has a hole there
+    ("bf_holes_reused",
+     [A("fix_bnd", "region del block -0.00003 0.00003 INF INF INF INF units box"),
+      A("fix_bnd", "variable zm atom mass==0.0"), A("fix_bnd", "group zm variable zm"),
+      A("fix_bnd", "group delg region del"), A("fix_bnd", "group delg intersect delg zm"),
+      A("fix_bnd", "delete_atoms group delg"), A("fix_bnd", "unfix bnd"),
+      A("fix_bnd", "fix bnd all esph/boundary spacing 1e-4")],
+     "error:so the surface has holes there", 2),
+    # one body ID on two blocks apart: a body in pieces
+    ("bf_body_in_pieces",
+     [R("rb", "region rb block 0.0001 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box"),
+      R("body_b", "set group b i_esph_body 1")],
+     "warning:in pieces that no particles within 1.5 spacings", 2),
+    # the same blocks with their own body IDs: no warning
+    ("bf_bodies_apart", [R("rb", "region rb block 0.0001 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box")],
+     "runs"),
     # the same with the whole body: the documented way
     ("pc_rigid_move_whole_body",
      [A("coeff", "pair_coeff 2 2 rho0 7850 shear 80e9 " + MG + " rigid yes"),
