@@ -429,8 +429,9 @@ void ESPHCheck::volumes(LAMMPS *lmp, ESPHState *st, const ESPH::EOS *eos,
                         "{} real particles have a reference volume m / rho0 of {:.3g} to {:.3g} "
                         "x spacing^{} of fix esph/boundary (on a simple cubic lattice it is "
                         "spacing^{}): a particle's mass is rho0 x spacing^{} of its type in the "
-                        "mass unit of the units style; another mass makes the material as much "
-                        "stiffer or softer, which the time step does not see",
+                        "mass unit of the units style, the spacing the lattice's; another mass "
+                        "makes the material as much stiffer or softer, which the time step "
+                        "does not see",
                         nall[1], loall[1], hiall[1], dim, dim, dim);
 }
 

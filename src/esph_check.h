@@ -116,7 +116,7 @@ namespace ESPHCheck {
   void smoothing_length(LAMMPS *lmp, double h0, double hmax, int hvar_flag, double spacing);
 
   static constexpr double DENSITY_OFF = 1.5;
-  static constexpr double VOLUME_OFF = 1.05;
+  static constexpr double VOLUME_OFF = 1.1;
   static constexpr double COINCIDENT = 1.0e-6;       // in units of h0
   static constexpr double OFF_DIMENSION = 1.0e-6;    // in units of h0
   // touching bodies are a spacing apart, bodies that overlap by half a spacing or more

@@ -947,6 +947,11 @@ void FixESPHBoundary::check_coverage(const std::vector<double> &newx, const std:
   }
   const auto got = halo_exchange(have, 4, blo, bhi, reach);
   have.insert(have.end(), got.begin(), got.end());
+  // (a body without any is init()'s error: a body added since they were made)
+  std::vector<int> bodies;
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && state->rmass[i] == 0.0) bodies.push_back(state->body[i]);
+  bodies = ESPHCheck::global_set(lmp, bodies);
   const int nhave = have.size() / 4;
   CellGrid grid(domain->boxlo, reach);
   grid.build(
@@ -962,6 +967,7 @@ void FixESPHBoundary::check_coverage(const std::vector<double> &newx, const std:
   for (size_t k = 0; k < src.size(); k++) {
     const double *p = &newx[3 * k];
     const double b = state->body[src[k]];
+    if (!std::binary_search(bodies.begin(), bodies.end(), state->body[src[k]])) continue;
     long long c[3];
     grid.cell_of(p, c);
     bool covered = false;

@@ -514,9 +514,11 @@ void PairESPHSolid::left_behind(bigint n, tagint first, double depth)
              "particles (a surface lies about half a spacing out): the real particles were moved "
              "without their boundary particles (e.g. fix recenter, displace_atoms, set or fix move "
              "on the real particles alone; apply such commands to all atoms of the body, boundary "
-             "particles included: fix recenter ... shift all), or two pieces of one body met (fix "
-             "esph/boundary warns of such bodies: give each piece its own i_esph_body); the body's "
-             "contact surface is no longer where its particles are",
+             "particles included: fix recenter ... shift all), their normals no longer point "
+             "out of the body (displace_atoms rotate after fix esph/boundary: rotate before it), "
+             "or two pieces of one body met (fix esph/boundary warns of such bodies: give each "
+             "piece its own i_esph_body); the body's contact surface is no longer where its "
+             "particles are",
              update->ntimestep, nall, first, i >= 0 ? state->body[i] : 0, depth / s, SURFACE_LEFT);
 }
 

@@ -193,6 +193,16 @@ CASES = [
       A("run", "create_atoms 2 region rc"), A("run", "group c region rc"),
       A("run", "set group c mass 7.85e-9"), A("run", "set group c i_esph_body 3"),
       A("run", "fix bnd all esph/boundary spacing 1e-4"), A("run", "run 2")],
+     "error:so the surface has holes there"),
+    # (group c also holds four of block b's boundary particles, which the set mass makes real:
+    # b's surface has holes; with a group of the new atoms only, the new body has none)
+    ("bf_body_added_reused_only_new",
+     [A("run", "unfix bnd"), A("run", "region rc block 0.0004 0.0006 -0.0001 0.0001 -0.0001 0.0001 units box"),
+      A("run", "variable nb atom mass>0.0||mass<0.0"), A("run", "group old variable nb"),
+      A("run", "group zm subtract all old"),
+      A("run", "create_atoms 2 region rc"), A("run", "group c subtract all old zm"),
+      A("run", "set group c mass 7.85e-9"), A("run", "set group c i_esph_body 3"),
+      A("run", "fix bnd all esph/boundary spacing 1e-4"), A("run", "run 2")],
      "error:a body added since they were made"),
     # masses and densities that do not fit the particle spacing or rho0 (warnings at setup)
     ("pc_mass_heavy_body", [R("mass", "set group all mass 7.85e-9"), A("mass", "set group b mass 3.14e-8")],
@@ -558,7 +568,10 @@ CASES = [
     ("fb_spacing_double", [R("fix_bnd", FB + "spacing 2e-4")], "error:set spacing to the"),
     ("fb_spacing_half", [R("fix_bnd", FB + "spacing 5e-5")], "error:set spacing to the"),
     ("fb_spacing_20pct_off", [R("fix_bnd", FB + "spacing 1.2e-4")], "warning:median nearest"),
-    ("fb_spacing_5pct_off", [R("fix_bnd", FB + "spacing 1.05e-4")], "runs"),
+    # (the boundary particles are placed for it; the particles' volume is 0.86 spacing^3)
+    ("fb_spacing_5pct_off", [R("fix_bnd", FB + "spacing 1.05e-4")],
+     "warning:reference volume m / rho0 of 0.864 to 0.864 x spacing^3"),
+    ("fb_spacing_2pct_off", [R("fix_bnd", FB + "spacing 1.02e-4")], "runs"),
     ("fb_type_invalid", [K("fix_bnd", " type 7")], "error:not a valid atom type"),
     ("fb_type_zero", [K("fix_bnd", " type 0")], "error:not a valid atom type"),
     ("fb_type_text", [K("fix_bnd", " type steel")], "error:type"),
@@ -785,7 +798,7 @@ CASES = [
     # positions rotated after the boundary particles were made: their normals stay behind
     ("bf_rotate_after_boundary",
      [A("fix_bnd", "displace_atoms b rotate 0.0002 0 0 0 0 1 90 units box")],
-     "warning:degrees off the direction away from their body"),
+     "error:displace_atoms rotate after fix esph/boundary: rotate before it"),
     ("bf_rotate_before_boundary",
      [B("fix_bnd", "displace_atoms b rotate 0.0002 0 0 0 0 1 90 units box")], "runs"),
     # bodies on another lattice than simple cubic: the boundary particles and the touch's cells
