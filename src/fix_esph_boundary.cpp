@@ -62,9 +62,6 @@ static constexpr double SURFACE_OFFSET = 0.05;
 // placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
 // diagonals of simple cubic
 static constexpr double NEAR_SHELL = 1.5;
-// existing boundary particles reused: each place where the fix would put one has one of the
-// same body within COVER_REACH spacings (a hole: the nearest about one spacing away)
-static constexpr double COVER_REACH = 0.6;
 // the pieces of the bodies are told apart with body IDs below 2^PIECE_BODY_BITS
 static constexpr int PIECE_BODY_BITS = 22;
 // a particle whose nearest neighbours' second moment M has det M < THIN_DET tr^3 and a sum
@@ -497,15 +494,37 @@ void FixESPHBoundary::generate()
                "Fix esph/boundary: all {} particles of group {} have zero mass; set the masses "
                "(and body IDs) of the real particles before defining this fix",
                ngroup_all, group->names[igroup]);
+  // boundary particles of the group's bodies outside the group (e.g. a fix on the real
+  // particles alone after read_restart): a second surface would be made on top of them
+  {
+    std::vector<int> gbodies;
+    for (int i = 0; i < nlocal; i++)
+      if ((mask[i] & groupbit) && state->rmass[i] > 0.0) gbodies.push_back(state->body[i]);
+    gbodies = ESPHCheck::global_set(lmp, gbodies);
+    tagint out = MAXTAGINT;
+    for (int i = 0; i < nlocal; i++)
+      if (!(mask[i] & groupbit) && state->rmass[i] == 0.0 &&
+          std::binary_search(gbodies.begin(), gbodies.end(), state->body[i]))
+        out = MIN(out, atom->tag[i]);
+    tagint out_all;
+    MPI_Allreduce(&out, &out_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (out_all != MAXTAGINT)
+      error->all(FLERR,
+                 "Fix esph/boundary: atom {}, a boundary particle (zero mass) of a body of group "
+                 "{}, is not in the group: the fix would make a second surface on top of the "
+                 "existing one. Define the fix on a group that holds the boundary particles "
+                 "too (e.g. all), and it uses them; or delete them first",
+                 out_all, group->names[igroup]);
+  }
   std::vector<double> newx, newn;
   std::vector<int> src;
   if (nexist_all > 0) {
     if (comm->me == 0)
       utils::logmesg(lmp, "Fix esph/boundary: using {} existing boundary particles\n", nexist_all);
     reused = nexist_all;
-    // they must still cover the surface this fix would make
+    // (the warnings on the arrangement of the bodies, as for a generation)
     find_surface(newx, newn, src);
-    check_coverage(newx, src);
+    check_counts();
     return;
   }
   find_surface(newx, newn, src);
@@ -549,6 +568,13 @@ void FixESPHBoundary::generate()
     state->gapv[m] = 0.0;
     state->eng[m] = 0.0;
     for (int d = 0; d < 6; d++) state->s[m][d] = 0.0;
+  }
+
+  // each boundary particle records how many its body was made with (check_counts())
+  const auto made = ESPHCheck::body_counts(lmp, state, groupbit, true);
+  for (int k = 0; k < nnew; k++) {
+    const int m = nprev + k;
+    state->depth[m] = (double) made.at(state->body[m]);
   }
 
   bigint nblocal = atom->nlocal;
@@ -916,94 +942,48 @@ void FixESPHBoundary::check_pieces(std::unordered_map<tagint, tagint> &up, const
 }
 
 /* ----------------------------------------------------------------------
-   existing boundary particles that the fix uses (none made): the places
-   where it would put them (newx, for the surface particles src of this
-   rank) must each have one of the same body within COVER_REACH spacings;
-   a place without one is a hole in the surface (boundary particles
-   deleted, or a body changed since they were made), through which other
-   bodies pass unseen (collective; an ERROR)
+   existing boundary particles that the fix uses (none made): each body
+   must still have as many as it was made with, which every boundary
+   particle records in d_esph_depth (generate(); 0: not known, e.g. given
+   ones or those of older files). One deleted or lost leaves a hole in the
+   surface, through which other bodies pass (collective; an ERROR). The
+   count, not the places: a body that deformed keeps its boundary
+   particles where the run took them, and continues as it would have
 ------------------------------------------------------------------------- */
 
-void FixESPHBoundary::check_coverage(const std::vector<double> &newx, const std::vector<int> &src)
+void FixESPHBoundary::check_counts()
 {
-  const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
-  const double reach = COVER_REACH * spacing;
-  // the places' box; the existing boundary particles (and their periodic images) of this rank
-  // and of the ranks around within reach of it
-  double blo[3] = {1.0e300, 1.0e300, 1.0e300}, bhi[3] = {-1.0e300, -1.0e300, -1.0e300};
-  for (size_t k = 0; k < src.size(); k++)
-    for (int d = 0; d < 3; d++) {
-      blo[d] = MIN(blo[d], newx[3 * k + d]);
-      bhi[d] = MAX(bhi[d], newx[3 * k + d]);
-    }
-  std::vector<double> have;
-  for (int i = 0; i < nlocal; i++) {
+  std::map<int, double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || state->rmass[i] != 0.0) continue;
-    double img[27][3];
-    const int nimg = periodic_images(domain, atom->x[i], reach, img);
-    for (int m = 0; m < nimg; m++)
-      have.insert(have.end(), {img[m][0], img[m][1], img[m][2], (double) state->body[i]});
+    double &rec = mine[state->body[i]];
+    rec = MAX(rec, state->depth[i]);
   }
-  const auto got = halo_exchange(have, 4, blo, bhi, reach);
-  have.insert(have.end(), got.begin(), got.end());
-  // (a body without any is init()'s error: a body added since they were made)
-  std::vector<int> bodies;
-  for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && state->rmass[i] == 0.0) bodies.push_back(state->body[i]);
-  bodies = ESPHCheck::global_set(lmp, bodies);
-  const int nhave = have.size() / 4;
-  CellGrid grid(domain->boxlo, reach);
-  grid.build(
-      nhave,
-      [&have](int k) {
-        return &have[4 * k];
-      },
-      [](int k) {
-        return (tagint) k;
-      });
-  bigint nopen = 0;
-  tagint first = MAXTAGINT;
-  for (size_t k = 0; k < src.size(); k++) {
-    const double *p = &newx[3 * k];
-    const double b = state->body[src[k]];
-    if (!std::binary_search(bodies.begin(), bodies.end(), state->body[src[k]])) continue;
-    long long c[3];
-    grid.cell_of(p, c);
-    bool covered = false;
-    for (int a = -1; a <= 1 && !covered; a++)
-      for (int e = -1; e <= 1 && !covered; e++)
-        for (int f = -1; f <= 1 && !covered; f++) {
-          const std::vector<int> *cell = grid.at(c, a, e, f);
-          if (!cell) continue;
-          for (int m : *cell) {
-            const double *q = &have[4 * m];
-            if (q[3] != b) continue;
-            const double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach) {
-              covered = true;
-              break;
-            }
-          }
-        }
-    if (covered) continue;
-    nopen++;
-    first = MIN(first, atom->tag[src[k]]);
+  std::vector<int> keys;
+  for (const auto &kv : mine) keys.push_back(kv.first);
+  const std::vector<int> bodies = ESPHCheck::global_set(lmp, keys);
+  std::vector<double> rec(bodies.size(), 0.0), rec_all(bodies.size(), 0.0);
+  for (size_t k = 0; k < bodies.size(); k++) {
+    auto it = mine.find(bodies[k]);
+    if (it != mine.end()) rec[k] = it->second;
   }
-  bigint counts[2] = {nopen, (bigint) src.size()}, counts_all[2];
-  MPI_Allreduce(counts, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (counts_all[0] == 0) return;
-  tagint tfirst;
-  MPI_Allreduce(&first, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  error->all(FLERR,
-             "Fix esph/boundary: {} of the {} places on the surfaces of group {} where the fix "
-             "puts boundary particles (e.g. at atom {}) have no existing boundary particle of "
-             "their body within {} spacings: the fix uses the {} boundary particles it found "
-             "and makes none, so the surface has holes there (boundary particles deleted, or "
-             "real particles added or moved since they were made), through which other bodies "
-             "pass. Delete all boundary particles (a group of the zero-mass particles, "
-             "delete_atoms) before defining the fix, so that it makes them anew",
-             counts_all[0], counts_all[1], group->names[igroup], tfirst, COVER_REACH, reused);
+  MPI_Allreduce(rec.data(), rec_all.data(), (int) rec.size(), MPI_DOUBLE, MPI_MAX, world);
+  const auto bnow = ESPHCheck::body_counts(lmp, state, groupbit, true);
+  const auto rnow = ESPHCheck::body_counts(lmp, state, groupbit);
+  for (size_t k = 0; k < bodies.size(); k++) {
+    const int b = bodies[k];
+    const bigint have = bnow.count(b) ? bnow.at(b) : 0;
+    if (!(rec_all[k] > 0.0) || have >= (bigint) rec_all[k] || !rnow.count(b)) continue;
+    error->all(FLERR,
+               "Fix esph/boundary: body {} has {} of the {} boundary particles it was made with "
+               "(d_esph_depth of a boundary particle records that number): the fix uses the {} "
+               "boundary particles it found and makes none, so the surface has holes there "
+               "(boundary particles deleted or lost), through which other bodies pass. Delete "
+               "all boundary particles (a group of the zero-mass particles, delete_atoms) before "
+               "defining the fix, so that it makes them anew",
+               b, have, (bigint) rec_all[k], reused);
+  }
 }
 
 /* ----------------------------------------------------------------------

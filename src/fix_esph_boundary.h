@@ -64,7 +64,7 @@ class FixESPHBoundary : public Fix {
   void generate();
   void find_surface(std::vector<double> &, std::vector<double> &, std::vector<int> &);
   void check_pieces(std::unordered_map<tagint, tagint> &, const double *, const double *, double);
-  void check_coverage(const std::vector<double> &, const std::vector<int> &);
+  void check_counts();
   void fit_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
   void region_normals(const std::vector<double> &, std::vector<double> &, const std::vector<int> &);
   std::vector<double> halo_exchange(const std::vector<double> &, int, const double *,

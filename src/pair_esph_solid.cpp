@@ -82,6 +82,7 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
   gap_reach2 = 0.0;
   touch_on_run = 0;
   surf_on = 1;
+  left_warned = 0;
   dt_step = 0.0;
   dt_keep = 0;
   ncontact_pairs = ntouch_pairs = 0;
@@ -115,6 +116,12 @@ void PairESPHSolid::init_style()
                ustyle);
   if (!atom->rmass_flag)
     error->all(FLERR, Error::NOLASTLINE, "Pair esph/solid requires per-atom masses");
+  if ((neighbor->nex_type || neighbor->nex_group || neighbor->nex_mol) && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair esph/solid with neigh_modify exclude: the excluded pairs are not in its "
+                   "neighbor lists, so those particles do not interact at all (bodies whose pairs "
+                   "are excluded pass through each other without contact, a body whose own pairs "
+                   "are excluded falls apart); use neigh_modify exclude none");
   if ((offset_flag || tail_flag) && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid has no cutoff energy to shift and no long-range tail: "
@@ -497,6 +504,7 @@ void PairESPHSolid::check_hybrid()
 void PairESPHSolid::setup()
 {
   check_hybrid();
+  left_warned = 0;
   // (resume_check() restores the time step of the last computation for the gap forecast)
   // RESUME_STEP: a continued run, at the prediction of the last step; RESUME_SETUP: after a
   // run without steps, at the state as is (the setup computation of that run, re-evaluated)

@@ -324,6 +324,7 @@ class PairESPHSolid : public Pair {
   void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
   void left_behind(bigint, tagint, double);
+  int left_warned;    // left_behind() warned in this run
   void store_cone(int);
   void artificial_stress();
   void atom_contact_clear();
