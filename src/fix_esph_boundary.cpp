@@ -62,8 +62,6 @@ static constexpr double SURFACE_OFFSET = 0.05;
 // placement): the first shell of simple cubic, bcc, fcc and hcp lattices and the face
 // diagonals of simple cubic
 static constexpr double NEAR_SHELL = 1.5;
-// the pieces of the bodies are told apart with body IDs below 2^PIECE_BODY_BITS
-static constexpr int PIECE_BODY_BITS = 22;
 // a particle whose nearest neighbours' second moment M has det M < THIN_DET tr^3 and a sum
 // of 2x2 principal minors > THIN_PLANE tr^2 has them in a plane, not on a line (a plane:
 // det 0, minors >= tr^2 / 4; a line: both 0; a lattice body's inside: det tr^3 / 27)
@@ -885,7 +883,8 @@ void FixESPHBoundary::check_pieces(std::unordered_map<tagint, tagint> &up, const
       const auto t = (tagint) got[k + 3];
       if (up.find(t) == up.end()) continue;
       const auto lab = (tagint) got[k + 4];
-      tagint &cur = label.emplace(piece_root(up, t), piece_root(up, t)).first->second;
+      const tagint r = piece_root(up, t);
+      tagint &cur = label.emplace(r, r).first->second;
       if (lab < cur) {
         cur = lab;
         changed = 1;
@@ -894,42 +893,36 @@ void FixESPHBoundary::check_pieces(std::unordered_map<tagint, tagint> &up, const
     MPI_Allreduce(&changed, &changed_all, 1, MPI_INT, MPI_MAX, world);
     if (!changed_all) break;
   }
-  // the pieces of every body, (body, smallest ID) pairs
-  std::vector<long long> keys;
-  int fits = 1, fits_all;
+  // a body is in one piece when all its particles have the same label: the smallest and the
+  // largest label over each body
+  std::map<int, std::pair<tagint, tagint>> range;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || state->rmass[i] <= 0.0) continue;
     const tagint lab = label_of(atom->tag[i]);
-    const int b = state->body[i];
-    if (b < 0 || b >= (1 << PIECE_BODY_BITS) ||
-        (long long) lab >= (1LL << (62 - PIECE_BODY_BITS))) {
-      fits = 0;
-      continue;
-    }
-    keys.push_back(((long long) b << (62 - PIECE_BODY_BITS)) | (long long) lab);
+    auto it = range.emplace(state->body[i], std::make_pair(lab, lab)).first;
+    it->second.first = MIN(it->second.first, lab);
+    it->second.second = MAX(it->second.second, lab);
   }
-  MPI_Allreduce(&fits, &fits_all, 1, MPI_INT, MPI_MIN, world);
-  // (body IDs or atom IDs beyond the key's bits: not checked)
-  if (!fits_all) return;
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  keys = ESPHCheck::global_set(lmp, keys);
+  std::vector<int> keys;
+  for (const auto &kv : range) keys.push_back(kv.first);
+  const std::vector<int> bodies = ESPHCheck::global_set(lmp, keys);
+  const int nb = bodies.size();
+  std::vector<tagint> lo(nb, MAXTAGINT), hi(nb, 0), lo_all(nb), hi_all(nb);
+  for (int k = 0; k < nb; k++) {
+    auto it = range.find(bodies[k]);
+    if (it == range.end()) continue;
+    lo[k] = it->second.first;
+    hi[k] = it->second.second;
+  }
+  MPI_Allreduce(lo.data(), lo_all.data(), nb, MPI_LMP_TAGINT, MPI_MIN, world);
+  MPI_Allreduce(hi.data(), hi_all.data(), nb, MPI_LMP_TAGINT, MPI_MAX, world);
   std::string list;
   int nbodies = 0;
-  for (size_t k = 0; k < keys.size();) {
-    const long long b = keys[k] >> (62 - PIECE_BODY_BITS);
-    size_t e = k;
-    while (e < keys.size() && (keys[e] >> (62 - PIECE_BODY_BITS)) == b) e++;
-    if (e - k > 1) {
-      if (nbodies < 3) {
-        const long long mask_id = ((long long) 1 << (62 - PIECE_BODY_BITS)) - 1;
-        list +=
-            fmt::format("{}body {} in {} pieces (atoms {} and {} in two of them)",
-                        nbodies ? "; " : "", b, e - k, keys[k] & mask_id, keys[k + 1] & mask_id);
-      }
-      nbodies++;
-    }
-    k = e;
+  for (int k = 0; k < nb; k++) {
+    if (lo_all[k] == hi_all[k]) continue;
+    if (nbodies++ < 3)
+      list += fmt::format("{}body {} (atoms {} and {} in two of them)", nbodies > 1 ? "; " : "",
+                          bodies[k], lo_all[k], hi_all[k]);
   }
   if (nbodies > 0 && comm->me == 0)
     error->warning(FLERR,

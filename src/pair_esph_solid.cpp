@@ -470,9 +470,8 @@ void PairESPHSolid::check_hybrid()
         for (const auto &kv : *force->pair_map) {
           // (zero computes no forces)
           if (utils::strmatch(kv.first, "^esph/solid") || kv.first == "zero") continue;
-          std::vector<char> name(kv.first.begin(), kv.first.end());
-          name.push_back('\0');
-          if (hybrid->check_ijtype(i, j, name.data())) {
+          // (check_ijtype() only reads the name)
+          if (hybrid->check_ijtype(i, j, const_cast<char *>(kv.first.c_str()))) {
             other = fmt::format("{} on types {} {}", kv.first, i, j);
             break;
           }
