@@ -235,8 +235,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
   __m512d sf0 = zero, sf1 = zero, sf2 = zero, savh = zero, sheat = zero;
   __m512d sg0 = zero, sg1 = zero, sg2 = zero, sg3 = zero, sg4 = zero, sg5 = zero, sg6 = zero,
           sg7 = zero, sg8 = zero;
-  __m512d sm0 = zero, sm1 = zero, sm2 = zero, sm3 = zero, sm4 = zero, sm5 = zero, sm6 = zero,
-          sm7 = zero, sm8 = zero;
+  __m512d sm0 = zero, sm1 = zero, sm2 = zero, sm4 = zero, sm5 = zero, sm8 = zero;
 
   alignas(32) int js[8];
   for (int b = 0; b < nbulk; b += 8) {
@@ -248,7 +247,11 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
     // the bulk partners (simd_split() put them first) within the support and not
     // coinciding (there the gradient vanishes); the cubic B-spline's dW/dr / r
     // (kernel_eval), 0 in every other lane
+    // (1 / r as r / r^2: the division starts with the square root, not after it; the
+    // divisions here are latency, not throughput: each one that waits for another result
+    // holds up the chunk)
     const __m512d r = _mm512_sqrt_pd(rsq);
+    const __m512d rsqinv = one / rsq;
     const __m512d q = r * hinv;
     const __mmask8 in = _mm512_mask_cmp_pd_mask(m, q, two, _CMP_LT_OQ);
     const __mmask8 live = _mm512_mask_cmp_pd_mask(in, r, zero, _CMP_GT_OQ);
@@ -256,7 +259,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
     const __m512d t = two - q;
     if (!live) continue;
     const __m512d dwdq = cubic_dwdq(near, q, t);
-    const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
+    const __m512d dw = _mm512_maskz_mul_pd(live, nh * dwdq * r, rsqinv);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
     const __m512d v0 = vi0 - c0[Q_V], v1 = vi1 - c0[Q_V + 1], v2 = vi2 - c0[Q_V + 2];
     const __m512d rhoj = c0[Q_RHO], cj = c1[Q_C - BLK1];
@@ -278,6 +281,10 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
     if (c.heat) load_cols(c.pk, c.stride, js, BLK3, c3);
     __m512d pi = zero;
     if (appr) {
+      // 1 / (D^2 rho_bar), D = r^2 + eps h^2: the one division of pi below, started before
+      // the velocity is reconstructed
+      const __m512d dd = rsq + epsh2;
+      const __m512d vinv = _mm512_maskz_div_pd(appr, one, dd * dd * (0.5 * (rhoi + rhoj)));
       __m512d vrv = vr;
       if (c.recon) {
         // the velocities reconstructed to the pair's midpoint, limited (recon_vr())
@@ -297,14 +304,15 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
         }
         vrv = _mm512_min_pd(vrv, zero);
       }
-      const __m512d mu = h0 * vrv / (rsq + epsh2);
       __m512d al = bcast(c.alpha), be = bcast(c.beta);
       if (c.vswitch) {
         al = 0.5 * (alphai + c2[Q_ALPHA - BLK2]);
         be = c.beta_ratio * al;
       }
-      pi =
-          _mm512_maskz_div_pd(appr, -al * 0.5 * (ci + cj) * mu + be * mu * mu, 0.5 * (rhoi + rhoj));
+      // pi = (-alpha c_bar mu + beta mu^2) / rho_bar with mu = X / D, X = h v_r:
+      // X (beta X - alpha c_bar D) / (D^2 rho_bar)
+      const __m512d X = h0 * vrv;
+      pi = _mm512_maskz_mul_pd(appr, X * (be * X - al * 0.5 * (ci + cj) * dd), vinv);
     }
     const __m512d avh = 0.5 * pi * (v0 * g0 + v1 * g1 + v2 * g2);
     const __m512d mm = mi * mj * c.fconv;
@@ -325,16 +333,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
     sg8 += w2 * g2;
     savh += mj * avh;
     if (CORR == 1) {
-      // M = sum_j m_j (x_j - x_i) (x) grad_i W
+      // M = sum_j m_j (x_j - x_i) (x) grad_i W = -sum_j m_j dW/dr / r (x_i - x_j) (x)
+      // (x_i - x_j): symmetric, its upper triangle
       const __m512d x0 = -mj * d0, x1 = -mj * d1, x2 = -mj * d2;
       sm0 += x0 * g0;
       sm1 += x0 * g1;
       sm2 += x0 * g2;
-      sm3 += x1 * g0;
       sm4 += x1 * g1;
       sm5 += x1 * g2;
-      sm6 += x2 * g0;
-      sm7 += x2 * g1;
       sm8 += x2 * g2;
     }
     if (c.heat) {
@@ -402,7 +408,7 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
   ai[A_AVHEAT] += _mm512_reduce_add_pd(savh);
   if (c.heat) ai[A_HEAT] += _mm512_reduce_add_pd(sheat);
   if (CORR == 1) {
-    const __m512d m8[8] = {sm0, sm1, sm2, sm3, sm4, sm5, sm6, sm7};
+    const __m512d m8[8] = {sm0, sm1, sm2, sm1, sm4, sm5, sm2, sm5};
     reduce_add8(m8, ai + A_M);
     ai[A_M + 8] += _mm512_reduce_add_pd(sm8);
   }
@@ -436,7 +442,9 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     const __m512d mp = c0[Q_M];
     const __m512d d0 = xk - c0[Q_X], d1 = yk - c0[Q_X + 1], d2 = zk - c0[Q_X + 2];
     const __m512d rsq = d0 * d0 + d1 * d1 + d2 * d2;
+    // (1 / r as r / r^2, as in bulk_atom())
     const __m512d r = _mm512_sqrt_pd(rsq);
+    const __m512d rsqinv = one / rsq;
     const __m512d q = r * hinv;
     const __mmask8 in = _mm512_mask_cmp_pd_mask(real, q, two, _CMP_LT_OQ);
     if (!in) continue;
@@ -445,7 +453,7 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     const __m512d t = two - q;
     const __m512d w = _mm512_maskz_mov_pd(in, c.norm * cubic_w(near, q, t));
     const __m512d dwdq = cubic_dwdq(near, q, t);
-    const __m512d dw = _mm512_maskz_div_pd(live, nh * dwdq, r);
+    const __m512d dw = _mm512_maskz_mul_pd(live, nh * dwdq * r, rsqinv);
     const __m512d g0 = dw * d0, g1 = dw * d1, g2 = dw * d2;
     // V_p, 0 in the lanes off the mask
     const __m512d Vp = _mm512_maskz_div_pd(in, mp, c0[Q_RHO]);
@@ -467,21 +475,22 @@ ESPH_AVX512 void bnd_atom(const BulkCtx &c, int k, const int *jlist, int jnum, d
     s[13] += Vw * c0[Q_V + 1];
     s[14] += Vw * c0[Q_V + 2];
     s[15] += Vw;
-    // x_p - x_k = -dx
+    // x_p - x_k = -dx; (x_p - x_k) (x) grad_k W is symmetric (grad_k W = dW/dr / r dx):
+    // its upper triangle, the rest after the loop
     const __m512d xa0 = -Vp * d0, xa1 = -Vp * d1, xa2 = -Vp * d2;
     s[16] += xa0 * g0;
     s[17] += xa0 * g1;
     s[18] += xa0 * g2;
-    s[19] += xa1 * g0;
     s[20] += xa1 * g1;
     s[21] += xa1 * g2;
-    s[22] += xa2 * g0;
-    s[23] += xa2 * g1;
     s[24] += xa2 * g2;
     s[25] += xa0 * w;
     s[26] += xa1 * w;
     s[27] += xa2 * w;
   }
+  s[19] = s[17];
+  s[22] = s[18];
+  s[23] = s[21];
   reduce_add8(s, ak + B_A);
   reduce_add8(s + 8, ak + B_A + 8);
   reduce_add8(s + 16, ak + B_A + 16);
