@@ -17,6 +17,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_bodies.h"
 #include "esph_eos.h"
 #include "esph_state.h"
 #include "esph_units.h"
@@ -91,6 +92,75 @@ std::vector<long long> ESPHCheck::global_set(LAMMPS *lmp, std::vector<long long>
 }
 
 /* ---------------------------------------------------------------------- */
+
+void ESPHCheck::body_shapes(LAMMPS *lmp, ESPHState *state, int groupbit, std::vector<int> &bodies,
+                            std::vector<double> &shape)
+{
+  bodies.clear();
+  shape.clear();
+  if (!state->body) return;
+  for (const auto &kv : body_counts(lmp, state, groupbit)) bodies.push_back(kv.first);
+  std::vector<double> ref, sum;
+  ESPH::body_reference(lmp, state, groupbit, bodies, ref);
+  ESPH::body_sums(lmp, state, groupbit, bodies, lmp->atom->v, 0, ref, sum);
+  for (size_t k = 0; k < bodies.size(); k++) {
+    const ESPH::BodyMotion b = ESPH::body_motion(sum.data() + ESPH::BODY_NSUM * k);
+    const double *S = b.S;
+    Eigen::Matrix3d m;
+    m << S[0], S[3], S[4], S[3], S[1], S[5], S[4], S[5], S[2];
+    const Eigen::Vector3d e =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues();
+    shape.insert(shape.end(), {b.M, e[0], e[1], e[2]});
+  }
+}
+
+/* ----------------------------------------------------------------------
+   a change of the second moment's eigenvalues by more than SHAPE_TOL of
+   the largest: a strain of about SHAPE_TOL / 2. An impact strains a body
+   by 1e-3 and more; rotations and translations (displace_atoms move,
+   rotate) change them by round-off only, a jitter of a hundredth of a
+   spacing of 10^4 particles by about 1e-6
+------------------------------------------------------------------------- */
+
+static constexpr double SHAPE_TOL = 1.0e-4;
+
+void ESPHCheck::check_shapes(LAMMPS *lmp, ESPHState *state, int groupbit,
+                             const std::vector<int> &bodies_then,
+                             const std::vector<double> &shape_then)
+{
+  if (bodies_then.empty()) return;
+  std::vector<int> bodies;
+  std::vector<double> shape;
+  body_shapes(lmp, state, groupbit, bodies, shape);
+  int nchanged = 0, first = 0;
+  double worst = 0.0;
+  for (size_t k = 0; k < bodies.size(); k++) {
+    const auto it = std::lower_bound(bodies_then.begin(), bodies_then.end(), bodies[k]);
+    if (it == bodies_then.end() || *it != bodies[k]) continue;
+    const double *now = &shape[SHAPE_NVAL * k];
+    const double *then = &shape_then[SHAPE_NVAL * (it - bodies_then.begin())];
+    // (particles added or deleted: another body, not a moved one)
+    if (fabs(now[0] - then[0]) > 1.0e-12 * then[0] || !(then[3] > 0.0)) continue;
+    double change = 0.0;
+    for (int e = 1; e < SHAPE_NVAL; e++) change = MAX(change, fabs(now[e] - then[e]) / then[3]);
+    if (change > SHAPE_TOL) {
+      if (!nchanged) {
+        first = bodies[k];
+        worst = change;
+      }
+      nchanged++;
+    }
+  }
+  if (nchanged && lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        "Fix esph/integrate: {} bod{} changed shape since the last run without "
+                        "a step (body {}: second moment by {:.3g} %): its particles were moved "
+                        "without their state (change_box ... remap, displace_atoms ramp or "
+                        "random, set x), so its density and stress still describe the old "
+                        "shape. Move bodies between runs only rigidly (displace_atoms move or "
+                        "rotate), or create them anew",
+                        nchanged, nchanged > 1 ? "ies" : "y", first, 100.0 * worst);
+}
 
 std::map<int, bigint> ESPHCheck::body_counts(LAMMPS *lmp, ESPHState *state, int groupbit,
                                              bool boundary)

@@ -56,6 +56,19 @@ namespace ESPHCheck {
   // with boundary, of the boundary (zero-mass) particles
   std::map<int, bigint> body_counts(LAMMPS *lmp, ESPHState *state, int groupbit,
                                     bool boundary = false);
+  // the shape of each body with real particles in groupbit, but those over more than half a
+  // periodic box (ESPH::body_reference()): its mass and the eigenvalues of its second moment
+  // about the centre of mass, ascending (SHAPE_NVAL values a body); bodies sorted (collective)
+  static constexpr int SHAPE_NVAL = 4;
+  void body_shapes(LAMMPS *lmp, ESPHState *state, int groupbit, std::vector<int> &bodies,
+                   std::vector<double> &shape);
+  // WARNING if a body of the same mass has another shape than at the end of the last run
+  // (bodies_then, shape_then from body_shapes()): its positions were changed without its
+  // state (change_box ... remap, displace_atoms ramp, set x). Rotations and translations
+  // keep the shape; collective
+  void check_shapes(LAMMPS *lmp, ESPHState *state, int groupbit,
+                    const std::vector<int> &bodies_then, const std::vector<double> &shape_then);
+
   // "1: 64, 2: 64" (the first few bodies)
   std::string format_bodies(const std::map<int, bigint> &counts);
 

@@ -31,6 +31,7 @@
 #include "esph_state.h"
 #include "esph_strength.h"
 #include "esph_threads.h"
+#include "fix_deform.h"
 #include "force.h"
 #include "group.h"
 #include "input.h"
@@ -223,6 +224,7 @@ void FixESPHIntegrate::init()
                    "out or use contact solid");
   check_group();
   check_average_forces();
+  check_deform();
   if (modify->get_fix_by_style("^esph/integrate").size() > 1)
     error->all(FLERR, Error::NOLASTLINE, "Only one fix esph/integrate may be defined");
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -297,6 +299,11 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   pair->pred_valid = 0;
   stepping = 0;
   state->fetch();
+  // bodies moved non-rigidly since the last run (not in a rerun, whose frames move them)
+  const bool rerun = input->command && strcmp(input->command, "rerun") == 0;
+  if (update->whichflag == 1 && !rerun)
+    ESPHCheck::check_shapes(lmp, state, groupbit, shape_bodies, shape_then);
+  shape_bodies.clear();
   double **v = atom->v;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -353,6 +360,36 @@ void FixESPHIntegrate::setup(int /*vflag*/)
   // (positions may have been changed between runs: the motion check starts afresh)
   moved_step = -1;
   moved_then.clear();
+}
+
+/* ----------------------------------------------------------------------
+   fix deform with remap x (its default) moves the atoms of its group with
+   the box each step, without their velocities: the continuity and stress
+   rates, made of velocity differences, miss that motion, so a body is
+   stretched without stress (measured: +4 % on a rebound, silently). With
+   remap v or none the box deforms alone, and a body periodic across it
+   feels that through its images
+------------------------------------------------------------------------- */
+
+void FixESPHIntegrate::check_deform()
+{
+  for (const auto &f : modify->get_fix_by_style("^deform")) {
+    auto *fd = dynamic_cast<FixDeform *>(f);
+    if (!fd || fd->remapflag != Domain::X_REMAP) continue;
+    int mine = 0;
+    for (int i = 0; i < atom->nlocal && !mine; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & f->groupbit)) mine = 1;
+    int any;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix deform {} remaps the positions of particles of fix esph/integrate {} "
+                     "(remap x, the default) without their velocities: the solid does not feel "
+                     "that motion (its density and stress rates come from velocities), so it is "
+                     "deformed without stress. Use fix deform ... remap v or remap none, or "
+                     "load the bodies through velocities or forces (fix move, fix setforce)",
+                     f->id, id);
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -148,10 +148,14 @@ class FixESPHIntegrate : public Fix {
   void check_group();
   bool other_torques();
   void check_moved_velocities();
-  int moved_warned;                                                // warned once
+  int moved_warned;    // warned once
+  // the bodies and their shapes at the end of the last run (ESPHCheck::body_shapes())
+  std::vector<int> shape_bodies;
+  std::vector<double> shape_then;
   bigint moved_step;                                               // step of moved_then
   std::unordered_map<tagint, std::array<double, 6>> moved_then;    // x, v by atom ID
   void check_average_forces();
+  void check_deform();
   void check_fixed_dt();
   double cfl_estimate(const class PairESPHSolid *) const;
   double dt_warned;       // the fixed time step last warned about (check_fixed_dt())

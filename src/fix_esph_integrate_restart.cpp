@@ -26,8 +26,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "esph_check.h"
 #include "esph_contact.h"
 #include "esph_state.h"
+#include "input.h"
 #include "pair_esph_solid.h"
 #include "update.h"
 
@@ -68,6 +70,13 @@ void FixESPHIntegrate::post_run()
   // one; the next run re-evaluates it (resume_check()) instead of starting afresh from the
   // engagements, strain rates and cones it stored, so that run 0 then run N is run N
   if (havepred == RESUME_NONE) havepred = RESUME_SETUP;
+  // the bodies' shapes, which the next run's setup compares (a rerun moves the particles
+  // frame by frame)
+  const bool rerun = input->command && strcmp(input->command, "rerun") == 0;
+  if (update->whichflag == 1 && !rerun)
+    ESPHCheck::body_shapes(lmp, state, groupbit, shape_bodies, shape_then);
+  else
+    shape_bodies.clear();
 }
 
 /* ----------------------------------------------------------------------

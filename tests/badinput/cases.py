@@ -419,6 +419,24 @@ CASES = [
      [A("fix_bnd", "variable massive atom mass>0.0"), A("fix_bnd", "group real variable massive"),
       A("fix_bnd", "unfix bnd"), A("fix_bnd", "fix bnd real esph/boundary spacing 1e-4")],
      "error:would make a second surface on top of the", 2),
+    # a run, then the box and the bodies stretched by change_box ... remap: the positions
+    # change, the density and stress do not (a rebound 19 % off, silently, before the check)
+    ("pc_change_box_remap",
+     [B("run", "run 10"), B("run", "change_box all x scale 1.05 remap")],
+     "warning:changed shape since the last run without a step", 2),
+    # the box alone changed, and the bodies moved rigidly (turned, shifted): the same shape
+    ("pc_change_box_rigid_moves",
+     [B("run", "run 10"), B("run", "change_box all x final -0.0008 0.0008 units box"),
+      B("run", "displace_atoms a rotate -0.0002 0 0 1 1 1 30 units box"),
+      B("run", "displace_atoms b move 0.00005 0 0 units box")],
+     "runs", 2),
+    # fix deform with remap x (its default) moves the particles without their velocities
+    ("pc_deform_remap_x",
+     [R("boundary", "boundary p f f"), A("velocity", "fix d all deform 1 x erate 1000")],
+     "warning:without their velocities: the solid does not feel", 2),
+    ("pc_deform_remap_v",
+     [R("boundary", "boundary p f f"), A("velocity", "fix d all deform 1 x erate 1000 remap v")],
+     "runs"),
     # one body ID on two blocks apart: a body in pieces
     ("bf_body_in_pieces",
      [R("rb", "region rb block 0.0001 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box"),
