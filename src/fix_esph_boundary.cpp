@@ -121,6 +121,7 @@ FixESPHBoundary::FixESPHBoundary(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
 
   spacing = 0.0;
+  noncubic_found = 0;
   reused = 0;
   smooth = 1.0;
   fit = FIT_DEFAULT;
@@ -829,7 +830,8 @@ void FixESPHBoundary::find_surface(std::vector<double> &newx, std::vector<double
     MPI_Allreduce(counts, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
     tagint tmine = noncubic ? noncubic_tag : MAXTAGINT, tfirst;
     MPI_Allreduce(&tmine, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    if (counts_all[1] > NONCUBIC_WARN * counts_all[0] && comm->me == 0)
+    noncubic_found = counts_all[1] > NONCUBIC_WARN * counts_all[0];
+    if (noncubic_found && comm->me == 0)
       error->warning(FLERR,
                      "Fix esph/boundary: {} of {} real particles of group {} (e.g. atom {}) have "
                      "no {} neighbourhood ({} nearly normal neighbours about one spacing away): "

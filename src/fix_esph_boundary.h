@@ -43,8 +43,11 @@ class FixESPHBoundary : public Fix {
   // the boundary normals turn with the rigid spin of their body (turn body), not with the
   // spin interpolated from the real particles around them (turn spin, eq. 17)
   int turns_with_body() const { return turn_body; }
+  // the last generation found the bodies on another lattice than simple cubic (square)
+  int off_lattice() const { return noncubic_found; }
 
  protected:
+  int noncubic_found;
   double spacing;    // particle spacing of the bodies
   double smooth;     // smoothing length of the normal kernel, in spacings
   double fit;        // radius of the surface fit of the normals, in spacings (0: off)

@@ -156,6 +156,7 @@ class FixESPHIntegrate : public Fix {
   std::unordered_map<tagint, std::array<double, 6>> moved_then;    // x, v by atom ID
   void check_average_forces();
   void check_deform();
+  void check_rebuilds();
   void check_fixed_dt();
   double cfl_estimate(const class PairESPHSolid *) const;
   double dt_warned;       // the fixed time step last warned about (check_fixed_dt())

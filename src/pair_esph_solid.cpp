@@ -526,12 +526,18 @@ void PairESPHSolid::setup()
                    contact != CONTACT_OFF ? boundary_spacing() : 0.0);
   {
     const double spacing = boundary_spacing();
-    ESPHCheck::volumes(
-        lmp, state, eos,
-        [this](int b) {
-          return spacing_of(b);
-        },
-        dim);
+    // (the volume per particle is spacing^D on a simple cubic lattice only: on another one,
+    // which fix esph/boundary warns about, a right mass would be warned as wrong)
+    bool off_lattice = false;
+    for (const auto *f : modify->get_fix_by_style("^esph/boundary$"))
+      if (dynamic_cast<const FixESPHBoundary *>(f)->off_lattice()) off_lattice = true;
+    if (!off_lattice)
+      ESPHCheck::volumes(
+          lmp, state, eos,
+          [this](int b) {
+            return spacing_of(b);
+          },
+          dim);
     // the artificial stress's dp is the particle spacing (Monaghan 2000)
     if (astress_flag && spacing > 0.0 && comm->me == 0 &&
         (astress_dp > 2.0 * spacing || astress_dp < 0.5 * spacing))

@@ -323,7 +323,7 @@ class PairESPHSolid : public Pair {
   static std::array<double, NTALLY> &tally_bodies(BodyTally &, int, int);
   void combine_acc_row(double *, const double *, int, int, int) const;
   void store_normal(int);
-  void left_behind(bigint, tagint, double);
+  void left_behind(bigint, tagint, double, int);
   int left_warned;    // left_behind() warned in this run
   void store_cone(int);
   void artificial_stress();

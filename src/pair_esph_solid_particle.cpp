@@ -321,9 +321,11 @@ void PairESPHSolid::finalize(int eflag)
   std::vector<bigint> nleft(nthreads, 0);
   std::vector<tagint> left_tag(nthreads, MAXTAGINT);
   std::vector<double> left_depth(nthreads, 0.0);
+  std::vector<int> left_body(nthreads, 0);
   bigint *const nleft_t = nleft.data();
   tagint *const left_tag_t = left_tag.data();
   double *const left_depth_t = left_depth.data();
+  int *const left_body_t = left_body.data();
   const tagint *tag = atom->tag;
   double **pred = pred_valid ? fix_int->pred : nullptr;
   double **drec = recon_flag ? state->drec : nullptr;
@@ -448,6 +450,7 @@ void PairESPHSolid::finalize(int eflag)
             if (tag[i] < left_tag_t[tid]) {
               left_tag_t[tid] = tag[i];
               left_depth_t[tid] = depth;
+              left_body_t[tid] = state->body ? state->body[i] : 0;
             }
           }
           bvel[i][0] = vk[0];
@@ -473,14 +476,16 @@ void PairESPHSolid::finalize(int eflag)
     bigint n = 0;
     tagint first = MAXTAGINT;
     double depth = 0.0;
+    int lbody = 0;
     for (int t = 0; t < nthreads; t++) {
       n += nleft[t];
       if (left_tag[t] < first) {
         first = left_tag[t];
         depth = left_depth[t];
+        lbody = left_body[t];
       }
     }
-    left_behind(n, first, depth);
+    left_behind(n, first, depth, lbody);
   }
   if (bnd) normals_valid = 1;
   if (bnd && turn_body) turn_with_bodies();
@@ -496,11 +501,12 @@ void PairESPHSolid::finalize(int eflag)
    recenter or displace_atoms on the real particles alone: the contact
    then acts at a surface off the body), or it lags where the body deforms
    strongly (measured 0.08-0.15 at the Taylor bar's impact face at 0.4 mm
-   and in plastic impacts at 300-1000 m/s): a WARNING, once per run. n
-   such particles on this rank, the first, its depth (collective)
+   and in plastic impacts at 300-1000 m/s), or the run went unstable: a
+   WARNING, once per run. n such particles on this rank, the first, its
+   depth and body (collective)
 ------------------------------------------------------------------------- */
 
-void PairESPHSolid::left_behind(bigint n, tagint first, double depth)
+void PairESPHSolid::left_behind(bigint n, tagint first, double depth, int body)
 {
   if (left_warned) return;
   bigint nall;
@@ -508,11 +514,10 @@ void PairESPHSolid::left_behind(bigint n, tagint first, double depth)
   if (nall == 0) return;
   tagint tfirst;
   MPI_Allreduce(&first, &tfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  // (the body and depth of the first, from its rank)
-  const int i = (first == tfirst) ? atom->map(first) : -1;
+  // (the body and depth of the first, from its rank; no atom map needed)
   double mine[2] = {-HUGE_VAL, -HUGE_VAL}, info[2];
-  if (i >= 0) {
-    mine[0] = state->body[i];
+  if (n > 0 && first == tfirst) {
+    mine[0] = body;
     mine[1] = depth;
   }
   MPI_Allreduce(mine, info, 2, MPI_DOUBLE, MPI_MAX, world);
@@ -531,7 +536,8 @@ void PairESPHSolid::left_behind(bigint n, tagint first, double depth)
         "fix esph/boundary: rotate before it), two pieces of one body met (fix esph/boundary "
         "warns of such bodies), or the body deforms so much that its boundary particles lag "
         "behind its surface (a surface stretching several-fold, e.g. the Taylor bar's impact "
-        "face: a known limit). Warned once per run",
+        "face: a known limit), or the run went unstable (a time step above the CFL limit: see "
+        "the warnings at its start). Warned once per run",
         update->ntimestep, nall, tfirst, (int) info[0], info[1] / s, SURFACE_LEFT);
 }
 

@@ -7,6 +7,7 @@ thing (a line replaced, removed, added or moved) and states its outcome:
 
   error:WORD    LAMMPS stops with an ERROR whose message contains WORD
   warning:WORD  the run completes with finite thermo and a WARNING containing WORD
+  onewarning:WORD  the same, and no other new WARNING (one cause, one message)
   same          the run completes without a new warning and its thermo equals the base's
                 (the change is legal and must not change the answer)
   runs          the run completes without a new warning and with finite thermo (legal
@@ -437,6 +438,24 @@ CASES = [
     ("pc_deform_remap_v",
      [R("boundary", "boundary p f f"), A("velocity", "fix d all deform 1 x erate 1000 remap v")],
      "runs"),
+    # the same without an atom map (LAMMPS's default for atom_style atomic): the warning
+    # names the first particle's body and depth all the same
+    ("pc_recenter_real_only_no_map",
+     [D("atom_modify"), A("fix_bnd", "variable massive atom mass>0.0"),
+      A("fix_bnd", "group real variable massive"),
+      A("velocity", "fix rc real recenter INIT INIT INIT"), R("run", "run 700")],
+     "warning:(e.g. atom 149 of body 1, 0.1", 2),
+    # neigh_modify check no: the lists are rebuilt every N steps whatever the motion; at
+    # 50 m/s the blocks close by 1.25 skins in 100 steps, by 0.125 in 10
+    ("nb_check_no_fast", [A("neighbor", "neigh_modify every 100 delay 0 check no")],
+     "warning:neigh_modify check no rebuilds the neighbour lists every 100 steps", 2),
+    ("nb_check_no_slow", [A("neighbor", "neigh_modify every 10 delay 0 check no")], "runs"),
+    # an fcc lattice with the mass right for it (a^3 / 4 rho0): the lattice is warned, and
+    # not the mass as well (its volume is 0.707 spacing^3 there)
+    ("bf_fcc_right_mass",
+     [R("lattice", "lattice fcc 1.41421356e-4 origin 0.25 0.25 0.25"),
+      R("mass", "set group all mass 5.5506e-9")],
+     "onewarning:have no simple cubic neighbourhood", 2),
     # one body ID on two blocks apart: a body in pieces
     ("bf_body_in_pieces",
      [R("rb", "region rb block 0.0001 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box"),

@@ -2,7 +2,7 @@
 """Run the ESPH bad-input suite (cases.py): every case under a timeout, against its
 expected outcome. A case FAILS on a crash (signal), a hang (timeout), NaN or inf in the
 thermo output, an unexpected success, an unexpected error or warning, a message without
-the expected word, or (outcome 'same') thermo that differs from the base scene's.
+the expected word, more than that warning (outcome 'onewarning'), or (outcome 'same') thermo that differs from the base scene's.
 
 usage: run_badinput.py --lmp LMP [--mpirun MPIRUN] --workdir DIR [--jobs N]
                        [--timeout S] [--only SUBSTRING] [--write-only]
@@ -106,9 +106,11 @@ def judge(expect, rc, out, base):
         return "unexpected error: %s" % (errors[0] if errors else "rc %d" % rc)
     if not rows:
         return "no thermo output"
-    if kind == "warning":
+    if kind in ("warning", "onewarning"):
         if not any(word in w for w in warnings):
             return "expected a warning with '%s', got %s" % (word, warnings or "none")
+        if kind == "onewarning" and len(warnings) > 1:
+            return "expected that warning alone, got %d: %s" % (len(warnings), warnings)
         return ""
     if warnings:
         return "unexpected warning: %s" % warnings[0]
