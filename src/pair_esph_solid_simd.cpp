@@ -292,15 +292,14 @@ ESPH_AVX512 void bulk_atom(const BulkCtx &c, int i, const int *jlist, int nbulk,
         const __m512d p = a_i * a_j;
         const __mmask8 pos = _mm512_mask_cmp_pd_mask(appr, p, zero, _CMP_GT_OQ);
         if (pos) {
-          __m512d phi;
-          if (c.recon == 1) {    // RECON_VANLEER
-            const __m512d s = a_i + a_j;
-            phi = _mm512_maskz_div_pd(pos, 4.0 * p, s * s);
+          if (c.recon == 1) {    // RECON_VANLEER: phi (a_i + a_j) / 2 = 2 p / (a_i + a_j)
+            vrv = _mm512_mask_sub_pd(vr, pos, vr, _mm512_maskz_div_pd(pos, 2.0 * p, a_i + a_j));
           } else {
             const __m512d fa = _mm512_abs_pd(a_i), fb = _mm512_abs_pd(a_j);
-            phi = _mm512_maskz_div_pd(pos, _mm512_min_pd(fa, fb), _mm512_max_pd(fa, fb));
+            const __m512d phi =
+                _mm512_maskz_div_pd(pos, _mm512_min_pd(fa, fb), _mm512_max_pd(fa, fb));
+            vrv = _mm512_mask_sub_pd(vr, pos, vr, 0.5 * phi * (a_i + a_j));
           }
-          vrv = _mm512_mask_sub_pd(vr, pos, vr, 0.5 * phi * (a_i + a_j));
         }
         vrv = _mm512_min_pd(vrv, zero);
       }

@@ -288,13 +288,9 @@ inline double recon_vr(double vr, const double *di, const double *dj, const doub
   const double aj = recon_slope(dj, dx);
   const double p = ai * aj;
   if (p <= 0.0) return vr;
-  double phi;
-  if (limiter == 1) {    // RECON_VANLEER
-    const double s = ai + aj;
-    phi = 4.0 * p / (s * s);
-  } else {
-    phi = std::min(fabs(ai), fabs(aj)) / std::max(fabs(ai), fabs(aj));
-  }
+  // van Leer: phi = 4 p / (a_i + a_j)^2, and phi (a_i + a_j) / 2 = 2 p / (a_i + a_j)
+  if (limiter == 1) return vr - 2.0 * p / (ai + aj);
+  const double phi = std::min(fabs(ai), fabs(aj)) / std::max(fabs(ai), fabs(aj));
   return vr - 0.5 * phi * (ai + aj);
 }
 
