@@ -499,6 +499,7 @@ void FixESPHIntegrate::check_group()
 
 void FixESPHIntegrate::check_average_forces()
 {
+  state->fetch();
   for (const auto &f : modify->get_fix_by_style("^aveforce")) {
     bigint n = 0, nall;
     for (int i = 0; i < atom->nlocal; i++)
@@ -510,6 +511,16 @@ void FixESPHIntegrate::check_average_forces()
                      "share of its force is lost, as they move with their bodies; use a group of "
                      "the real particles (mass > 0) only",
                      f->id, f->style, nall, group->names[f->igroup]);
+    // (a group over several bodies: each particle gets the mean force of all of them, so
+    // the bodies move as one along the fix's directions)
+    const auto bodies = ESPHCheck::body_counts(lmp, state, f->groupbit);
+    if (bodies.size() > 1 && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix {} ({}) averages the forces of real particles of {} bodies ({}): "
+                     "each gets the mean force of all of them, so the bodies move as one "
+                     "along the fix's directions and their contact does nothing there; use one "
+                     "fix per body",
+                     f->id, f->style, bodies.size(), ESPHCheck::format_bodies(bodies));
   }
 }
 

@@ -456,6 +456,15 @@ CASES = [
      [R("lattice", "lattice fcc 1.41421356e-4 origin 0.25 0.25 0.25"),
       R("mass", "set group all mass 5.5506e-9")],
      "onewarning:have no simple cubic neighbourhood", 2),
+    # fix aveforce on the real particles of both bodies: they move as one along x
+    ("fi_aveforce_two_bodies",
+     [A("fix_bnd", "variable massive atom mass>0.0"), A("fix_bnd", "group real variable massive"),
+      A("velocity", "fix af real aveforce 0.0 NULL NULL")],
+     "warning:averages the forces of real particles of 2 bodies", 2),
+    ("fi_aveforce_one_body",
+     [A("fix_bnd", "variable massive atom mass>0.0"), A("fix_bnd", "group real variable massive"),
+      A("fix_bnd", "group rb intersect b real"), A("velocity", "fix af rb aveforce NULL 0.0 NULL")],
+     "runs"),
     # one body ID on two blocks apart: a body in pieces
     ("bf_body_in_pieces",
      [R("rb", "region rb block 0.0001 0.0004 -0.0002 0.0002 -0.0002 0.0002 units box"),
