@@ -613,9 +613,12 @@ CASES = [
     # fix aveforce on a group with boundary particles loses their share (momentum +44 %)
     ("fi_aveforce_boundary", [A("velocity", "fix avef all aveforce 0.0 0.0 NULL")],
      "warning:share of its force is lost"),
+    # (on the real particles of one body: over both, the bodies would move as one along x,
+    # fi_aveforce_two_bodies)
     ("fi_aveforce_real", [A("velocity", "variable massive atom mass>0.0"),
                           A("velocity", "group real variable massive"),
-                          A("velocity", "fix avef real aveforce 0.0 0.0 NULL")], "runs"),
+                          A("velocity", "group rb intersect b real"),
+                          A("velocity", "fix avef rb aveforce 0.0 0.0 NULL")], "runs"),
     # block B one particle thick: its faces get no boundary particles (a hostile round: a
     # plate flew through a block without a message)
     ("fb_single_layer", [R("rb", "region rb block 0 0.0001 -0.0002 0.0002 -0.0002 0.0002 "
