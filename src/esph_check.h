@@ -69,6 +69,10 @@ namespace ESPHCheck {
   void check_shapes(LAMMPS *lmp, ESPHState *state, int groupbit,
                     const std::vector<int> &bodies_then, const std::vector<double> &shape_then);
 
+  // a hint for an error on zero masses where the mass command set per-type masses ("" if
+  // none was set)
+  std::string type_mass_hint(LAMMPS *lmp);
+
   // "1: 64, 2: 64" (the first few bodies)
   std::string format_bodies(const std::map<int, bigint> &counts);
 
@@ -125,7 +129,8 @@ namespace ESPHCheck {
   // the smoothing length h0 of pair esph/solid and, with hvar, the largest h0 x hmax the
   // neighbour cutoff admits, against the particle spacing of fix esph/boundary (> 0): an
   // error beyond H_ERROR spacings (every particle would see thousands of neighbours, or
-  // the cutoff spans the box), a warning for h0 beyond H_WARN spacings (1 to 2 is usual)
+  // the cutoff spans the box), a warning for h0 beyond H_WARN spacings (1 to 2 is usual);
+  // an error at or below H_NONE spacings (no neighbours), a warning below H_LOW
   void smoothing_length(LAMMPS *lmp, double h0, double hmax, int hvar_flag, double spacing);
 
   static constexpr double DENSITY_OFF = 1.5;
@@ -137,6 +142,8 @@ namespace ESPHCheck {
   static constexpr double OVERLAP = 0.6;    // in units of the particle spacing
   static constexpr double MAX_RATIO = 3.0;
   static constexpr double ISOLATED = -2.0;
+  static constexpr double H_NONE = 0.5;      // 2 h below one spacing: no neighbours (error)
+  static constexpr double H_LOW = 0.95;      // below: a warning (1 to 2 is usual)
   static constexpr double H_WARN = 3.0;      // in units of the particle spacing
   static constexpr double H_ERROR = 10.0;    // in units of the particle spacing
 }    // namespace ESPHCheck

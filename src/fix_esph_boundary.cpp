@@ -491,8 +491,8 @@ void FixESPHBoundary::generate()
   if (nexist_all > 0 && nexist_all == ngroup_all)
     error->all(FLERR,
                "Fix esph/boundary: all {} particles of group {} have zero mass; set the masses "
-               "(and body IDs) of the real particles before defining this fix",
-               ngroup_all, group->names[igroup]);
+               "(and body IDs) of the real particles before defining this fix{}",
+               ngroup_all, group->names[igroup], ESPHCheck::type_mass_hint(lmp));
   // boundary particles of the group's bodies outside the group (e.g. a fix on the real
   // particles alone after read_restart): a second surface would be made on top of them
   {

@@ -176,6 +176,17 @@ CASES = [
     ("ps_xsph_above_one", [K("pair", " xsph 1.5")], "error:[0, 1]"),
     ("ps_xsph_negative", [K("pair", " xsph -0.5")], "error:[0, 1]"),
     ("ps_xsph_on", [K("pair", " xsph 0.5")], "runs"),
+    # the per-type mass command instead of set ... mass: ESPH keeps per-particle masses, and
+    # the error on the zero masses says so
+    ("ps_mass_command", [R("mass", "mass * 7.85e-9")],
+     "error:the mass command sets masses per type, which ESPH does not use", 2),
+    # h below half the spacing: the kernel (2 h) reaches no neighbour, the bodies fall apart
+    # into free particles (a user sweep: first contact 10 % late, rebound 36 instead of 4.5
+    # m/s, silently); 0.7 spacings: only the nearest neighbours
+    ("ps_h_no_neighbours", [R("pair", "pair_style esph/solid 0.4e-4")],
+     "error:so no particle has a neighbour", 2),
+    ("ps_h_small", [R("pair", "pair_style esph/solid 0.7e-4")],
+     "warning:a particle sees only its nearest neighbours"),
     ("ps_gaptol_missing", [K("pair", " gap/tol")], "error:missing argument"),
     ("ps_gaptol_negative", [K("pair", " gap/tol -1")], "error:gap/tol must be >= 0"),
     ("ps_gaptol_text", [K("pair", " gap/tol tiny")], "error:Expected floating point"),
