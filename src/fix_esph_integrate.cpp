@@ -347,10 +347,13 @@ void FixESPHIntegrate::setup(int /*vflag*/)
 
   // the angular momentum of free bodies, where the pair forces do not keep it and nothing
   // else may exert torques (esph_spin_watch.h)
-  spin_watch_on = pair->nboundary > 0 && move && domain->dimension > 1 &&
+  // (without boundary particles bodies are not told apart in contact: the watch then serves
+  // a scene of one body; nboundary is a global count, so every rank asks alike)
+  spin_watch_on = move && domain->dimension > 1 &&
       (pair->correct_flag == PairESPHSolid::CORRECT_PLAIN ||
        pair->correct_flag == PairESPHSolid::CORRECT_RATE) &&
-      !other_torques();
+      !other_torques() &&
+      (pair->nboundary > 0 || ESPHCheck::body_counts(lmp, state, groupbit).size() == 1);
   if (spin_watch_on) spin_watch.setup(lmp, state, groupbit);
   energy_watch.setup(lmp, state, groupbit);
   // the bodies whose boundary particles this fix does not move (check_boundary_motion();
@@ -1014,8 +1017,8 @@ void FixESPHIntegrate::final_integrate()
     const double sums[ESPH::ContactRecord::NTALLY] = {total[0], total[1], total[2], 0.0, 0.0, 0.0};
     contact_all.update(t, update->dt, sums);
     update_body_pairs(t);
-    if (spin_watch_on) spin_watch.step(lmp, state, groupbit, update->ntimestep, id);
   }
+  if (spin_watch_on) spin_watch.step(lmp, state, groupbit, update->ntimestep, id);
   // a fixed time step against the CFL estimate during the run too (the estimate falls where
   // an impact compresses a stiffening material), every FIXED_DT_CHECK steps
   if (cfl <= 0.0 && update->ntimestep % FIXED_DT_CHECK == 0) check_fixed_dt();
