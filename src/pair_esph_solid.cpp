@@ -789,6 +789,7 @@ void PairESPHSolid::compute(int eflag, int vflag)
   if (touch && !touch_first) update_touch(simd_active);
   surf_on = surface_sums();
   pair_pass(bnd);
+  if (bnd && friction > 0.0 && contact != CONTACT_OFF) friction_pass();
 
   if (force->newton_pair) {
     comm_stage = COMM_ACC;
@@ -928,6 +929,8 @@ void PairESPHSolid::pair_pass(int bnd)
   // keep the nodes of body pairs seen before: no allocation in the pair loop once known
   for (auto &kv : body_tally) kv.second.fill(0.0);
   LoopOut out{0, list->inum, acc, atom->f, atom_contact, &body_tally, 0, 0, 0.0};
+  fric_pairs.clear();
+  out.fric = &fric_pairs;
   run_pair_loop(bnd, out);
   if (simd_active) bulk_pass(out);
   ncontact_pairs = out.ncontact;
@@ -996,6 +999,10 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
       for (int k = 0; k < 9; k++) buf[m++] = touch_frame[9 * (size_t) list[i] + k];
     return m;
   }
+  if (comm_stage == COMM_FRIC) {
+    for (int i = 0; i < n; i++) buf[m++] = acc[list[i]][A_FSUM];
+    return m;
+  }
   for (int i = 0; i < n; i++) {
     const double *q = hq[list[i]];
     for (int k = Q_V; k < Q_A + 6; k++) buf[m++] = q[k];
@@ -1058,6 +1065,13 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
       for (int k = 0; k < 9; k++) touch_frame[9 * (size_t) i + k] = buf[m++];
     return;
   }
+  if (comm_stage == COMM_FRIC) {
+    // (the slot of a boundary particle is one of its gap candidates': left alone)
+    const double *rmass = state->rmass;
+    for (int i = first; i < last; i++, m++)
+      if (rmass[i] > 0.0) acc[i][A_FSUM] = buf[m];
+    return;
+  }
   for (int i = first; i < last; i++) {
     double *q = hq[i];
     for (int k = Q_V; k < Q_A + 6; k++) q[k] = buf[m++];
@@ -1099,6 +1113,10 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     for (int i = first; i < last; i++) buf[m++] = touch_mark[i];
     return m;
   }
+  if (comm_stage == COMM_FRIC) {
+    for (int i = first; i < last; i++) buf[m++] = acc[i][A_FSUM];
+    return m;
+  }
   if (comm_stage == COMM_COUPLE) {
     // (the rows of atoms without a couple hold nothing)
     for (int i = first; i < last; i++)
@@ -1137,6 +1155,13 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
   }
   if (comm_stage == COMM_TOUCH) {
     for (int i = 0; i < n; i++) touch_mark[list[i]] += buf[m++];
+    return;
+  }
+  if (comm_stage == COMM_FRIC) {
+    // (the slot of a boundary particle is one of its gap candidates': left alone)
+    const double *rmass = state->rmass;
+    for (int i = 0; i < n; i++, m++)
+      if (rmass[list[i]] > 0.0) acc[list[i]][A_FSUM] += buf[m];
     return;
   }
   if (comm_stage == COMM_COUPLE) {

@@ -245,6 +245,17 @@ class PairESPHSolid : public Pair {
   class FixESPHIntegrate *fix_int;
   int nthreads;    // threads of the per-atom passes and the pair loop (1; /omp: package omp)
 
+  // an interacting cross-body pair whose friction friction_pass() applies: its particles
+  // (j's rows written where jown), the Coulomb force mu |f_n| (force units), the slip
+  // velocity v_t of i against j, the reduced mass (force units), the pair vector x_i - x_j,
+  // mm = m_i m_j (force units), the share of the friction work heating the pair's two
+  // particles' rows (1/2 each, 1 against a rigid particle) and the tally weight; rig: 0, or
+  // 1 / 2 where i / j is rigid
+  struct FricPair {
+    int i, j, jown, rig;
+    double fc, mred, mm, heat, wnet;
+    double vt[3], dx[3];
+  };
   // one pass of the pair loop: the neighbour list entries [iifrom, iito) it takes, the rows
   // it adds to (of acc, atom->f and atom_contact: the arrays themselves, or for a thread of
   // pair esph/solid/omp its private rows of the atoms it does not own) and its tallies
@@ -256,7 +267,13 @@ class PairESPHSolid : public Pair {
     double fcontact;
     // the time step the pairs of real particles of different bodies allow (cross_dt())
     double dtcross = 1.0e300;
+    // friction: the pass's interacting cross-body pairs (friction_pass())
+    std::vector<FricPair> *fric = nullptr;
   };
+  std::vector<FricPair> fric_pairs;
+  // friction: the force of each recorded pair bounded by the stop force of both its
+  // particles' pairs together, then applied (forces, heating, couples, tallies)
+  void friction_pass();
   // the step a pair of real particles of different bodies and masses allows
   double cross_dt(int i, int j, double mi, double mj) const;
   // the longitudinal wave speed of the CFL estimate, from the squared bulk sound speed c2

@@ -514,3 +514,58 @@ void PairESPHSolid::atom_contact_clear()
   }
   if (nall > 0) memset(&atom_contact[0][0], 0, sizeof(double) * 2 * nall);
 }
+
+/* ----------------------------------------------------------------------
+   friction (pair_style esph/solid friction mu): the recorded cross-body
+   pairs of this computation get the Coulomb force mu |f_n| against their
+   slip v_t, bounded so that the friction of all the pairs of a particle
+   together cannot reverse its slip: the pair's share f_c / F of the force
+   that stops the slip of the pair's reduced mass within STICK_STEPS steps,
+   F the sum of the Coulomb forces of the particle's pairs (A_FSUM), of
+   whichever of the two particles has the larger sum (against a rigid
+   particle, which does not move, the deformable one's). A bound per pair
+   (before 2026-12-07: 1/32 of the stop force) held the friction below
+   Coulomb's at high pressure while the bodies slid at tens of m/s, and no
+   per-pair share stops a particle with more pairs than it assumes
+------------------------------------------------------------------------- */
+
+void PairESPHSolid::friction_pass()
+{
+  // the sums of the owners, then theirs at the ghosts (all ranks take part)
+  comm_stage = COMM_FRIC;
+  if (force->newton_pair) comm->reverse_comm(this, 1);
+  comm->forward_comm(this, 1);
+
+  double **f = atom->f;
+  const double *rmass = state->rmass;
+  const int *body = state->body;
+  const int couple = couple_on;
+  const double dt = dt_step;
+  for (const FricPair &p : fric_pairs) {
+    const int i = p.i, j = p.j;
+    const double vtm = sqrt(p.vt[0] * p.vt[0] + p.vt[1] * p.vt[1] + p.vt[2] * p.vt[2]);
+    const double fsum = (p.rig == 1) ? acc[j][A_FSUM]
+        : (p.rig == 2)               ? acc[i][A_FSUM]
+                                     : std::max(acc[i][A_FSUM], acc[j][A_FSUM]);
+    const double fstop = p.mred * vtm / (STICK_STEPS * dt);
+    const double ft = (fstop < fsum) ? p.fc * fstop / fsum : p.fc;
+    const double s = ft / vtm;
+    const double ff[3] = {-s * p.vt[0], -s * p.vt[1], -s * p.vt[2]};
+    // the work ft |v_t| heats the pair (acc's viscous heating slot: per unit of m_i m_j)
+    const double hw = p.heat * ft * vtm / p.mm;
+    for (int a = 0; a < 3; a++) f[i][a] += ff[a];
+    acc[i][A_AVHEAT] += rmass[j] * hw;
+    if (p.jown) {
+      for (int a = 0; a < 3; a++) f[j][a] -= ff[a];
+      acc[j][A_AVHEAT] += rmass[i] * hw;
+    }
+    if (couple) {
+      double t[3];
+      for (int a = 0; a < 3; a++)
+        t[a] = -(p.dx[(a + 1) % 3] * ff[(a + 2) % 3] - p.dx[(a + 2) % 3] * ff[(a + 1) % 3]);
+      add_couple(acc[i], p.jown ? acc[j] : nullptr, t);
+    }
+    auto &tb = tally_bodies(body_tally, body[i], body[j]);
+    for (int a = 0; a < 3; a++) tb[3 + a] += p.wnet * ff[a];
+  }
+}

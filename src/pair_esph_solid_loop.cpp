@@ -420,22 +420,26 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           ff[1] = fn * nc[1];
           ff[2] = fn * nc[2];
           if (FRIC) {
-            // Coulomb friction: mu |f_n| against the slip, the work going into heat, half
-            // to each particle, all of it to the deformable one against a rigid body (which
-            // has no internal energy: its half was lost, 14 % of the energy of a block
-            // sliding on a rigid plate); below the slip speed at which that force would
-            // reverse the slip, the force that stops it
+            // Coulomb friction mu |f_n| against the slip: recorded, and applied by
+            // friction_pass() once the Coulomb forces of every particle's pairs are summed
             const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
-            if (vt2 > 0.0) {
-              const double vtm = sqrt(vt2);
+            const double fc = -friction * fn;
+            if (vt2 > 0.0 && fc > 0.0) {
               // (the pair's reduced mass; against a rigid particle, which does not move,
-              // the deformable one's mass)
-              const double mred = (RIG && (ri || rj)) ? (ri ? mj : mi) * fconv : mm / (mi + mj);
-              const double fstick = mred * vtm / (STICK_SHARE * dt);
-              const double ft = std::min(-friction * fn, fstick);
-              const double s = ft / vtm;
-              for (int a = 0; a < 3; a++) ff[a] -= s * vt[a];
-              avh += ((RIG && (ri || rj)) ? 1.0 : 0.5) * ft * vtm / mm;
+              // the deformable one's mass; the friction work heats the deformable one alone
+              // against a rigid body, which has no internal energy)
+              const int rig = RIG ? (ri ? 1 : (rj ? 2 : 0)) : 0;
+              const double mred = rig ? (ri ? mj : mi) * fconv : mm / (mi + mj);
+              const double wnet =
+                  ((newton_pair || j < nlocal) ? 1.0 : 0.5) * ((bi < body[j]) ? 1.0 : -1.0);
+              FricPair fp{i, j, jown, rig, fc, mred, mm, rig ? 1.0 : 0.5, wnet, {}, {}};
+              for (int a = 0; a < 3; a++) {
+                fp.vt[a] = vt[a];
+                fp.dx[a] = dx[a];
+              }
+              out.fric->push_back(fp);
+              acc[i][A_FSUM] += fc;
+              if (jown) acc[j][A_FSUM] += fc;
             }
           }
           if (couple) {

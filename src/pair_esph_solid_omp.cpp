@@ -211,6 +211,8 @@ void PairESPHSolidOMP::pair_pass(int bnd)
         }
         LoopOut out{t.from, t.to, t.acc_rows.data(), t.f_rows.data(), t.c_rows.data(), &t.tally, 0,
                     0,      0.0};
+        t.fric.clear();
+        out.fric = &t.fric;
         run_pair_loop(bnd, out);
         // the thread's own particles' bulk pairs: their rows only
         if (simd_active) bulk_pass(out);
@@ -233,7 +235,9 @@ void PairESPHSolidOMP::pair_pass(int bnd)
   ncontact_pairs = ntouch_pairs = 0;
   fcontact = 0.0;
   for (auto &kv : body_tally) kv.second.fill(0.0);
+  fric_pairs.clear();
   for (const auto &t : thr) {
+    fric_pairs.insert(fric_pairs.end(), t.fric.begin(), t.fric.end());
     ncontact_pairs += t.ncontact;
     ntouch_pairs += t.ntouch;
     fcontact += t.fcontact;

@@ -51,6 +51,7 @@ class PairESPHSolidOMP : public PairESPHSolid {
     std::vector<int> foreign;    // the atoms of the private rows, in row order
     std::vector<double> priv;    // private rows, PRIV_STRIDE each
     BodyTally tally;
+    std::vector<FricPair> fric;    // its cross-body pairs with friction (friction_pass())
     int ncontact, ntouch;
     double fcontact, dtcross;
   };

@@ -45,7 +45,7 @@ static constexpr int A_GW = 28;      // sum_k W_ik over own boundary particles w
 static constexpr int A_GG = 29;      // sum_k W_ik (gap_k + dt gapdot_k)
 static constexpr int A_GV = 30;      // sum_k W_ik gapdot_k
 // end of the gap slots, communicated together: A_GW..A_GV of real particles (slot 31
-// unused), B_GAP..B_GAP+3 of boundary particles
+// A_FSUM with friction), B_GAP..B_GAP+3 of boundary particles
 static constexpr int GAP_END = 32;
 // 32..37: sum_k W_ik n_k (x) n_k over own boundary particles (Voigt), the cone of the
 // surface (contact normal cone)
@@ -77,9 +77,12 @@ static constexpr int EXTRA_RIGID = 8;
 static constexpr int EXTRA_VISC = 16;    // visc/switch or visc/recon
 static constexpr int EXTRA_CONE = 32;    // contact/normal cone alone (the friction and rigid
                                          // variants have the cones at run time)
-// the friction of a pair never exceeds the force that would stop the pair's slip within
-// 1/STICK_SHARE of a step, so that the many pairs of a particle cannot reverse its slip
-static constexpr double STICK_SHARE = 32.0;
+// friction: the Coulomb forces of all the cross-body pairs of a real particle, summed by
+// the pair loop in this slot (unused otherwise by real particles) for friction_pass()
+static constexpr int A_FSUM = 31;
+// the friction of a particle's pairs together never exceeds the force that would stop their
+// slip within STICK_STEPS steps, so that they cannot reverse it (friction_pass())
+static constexpr double STICK_STEPS = 2.0;
 // boundary particles
 static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
 static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
@@ -126,7 +129,8 @@ enum {
   COMM_ATOM_CONTACT,
   COMM_CORR,
   COMM_COUPLE,
-  COMM_TOUCH
+  COMM_TOUCH,
+  COMM_FRIC
 };
 
 static constexpr double BIG_DT = 1.0e300;

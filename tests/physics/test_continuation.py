@@ -14,6 +14,8 @@ Scenes, 200 steps each, contact from the first step, split at step 30 (in contac
   couple   the same with gradient bonet/lok and contact/couple yes (the contact's couples
            passed to the neighbours: nothing carried over, all recomputed)
   plane    the same with contact/gap plane (the gaps bounded by the tangent planes)
+  friction the same with friction 0.3 (the bound of a pair's friction from the Coulomb
+           sums of this computation's pairs: nothing carried over)
   rigidturn the upper block rigid and turned by fix move rotate, fixed step: the boundary
            particles of a body another fix moves turn at the end of a step, after its force
            computation (before the fix: 6e-6 in the contact force after a split, 2026-12-06)
@@ -78,6 +80,8 @@ scenes["couple"] = block_scene("cfl 0.3", "gradient bonet/lok contact/couple yes
 # contact/gap plane: the gaps bounded by the tangent planes (no state of its own: the same
 # boundary particles' gaps carried over)
 scenes["plane"] = block_scene("cfl 0.3", "contact/gap plane") + ({},)
+# Coulomb friction: the cross-body pairs' bound from the sums of this computation only
+scenes["friction"] = block_scene("cfl 0.3", "friction 0.3") + ({},)
 # the upper block rigid, turned by fix move rotate about a point above it (its boundary
 # particles turn at the end of each step, after its force computation), the lower one
 # integrated; fixed step (fix move forbids the CFL step)
@@ -246,11 +250,12 @@ def check(title, result, why, nmin=NSTEPS // 5):
 
 
 for scene in ("oblique", "bonetlok", "staggered", "recon", "cone", "conestag", "couple", "plane",
-              "turnbody", "rigidturn", "triclinic", "plastic", "rod", "slabs"):
+              "friction", "turnbody", "rigidturn", "triclinic", "plastic", "rod", "slabs"):
     k = SPLITS.get(scene, SPLIT)
     for np_ in (1, 2):
         dr = drivers(scene)
-        if scene in ("bonetlok", "staggered", "recon", "turnbody", "couple", "rigidturn", "plane"):
+        if scene in ("bonetlok", "staggered", "recon", "turnbody", "couple", "rigidturn", "plane",
+                     "friction"):
             dr = {k: dr[k] for k in ("full", "split2", "restart")}
         if scene == "triclinic":
             dr = {k: dr[k] for k in ("full", "split2", "balance")}

@@ -131,6 +131,13 @@ cn0 = et.production_thermo(et.run(a, OBL, cone, log="log.cone.t0"))
 compare("oblique rod, contact/normal cone: 2 threads vs none", cn0,
         et.production_thermo(et.run(a, OBL, cone, log="log.cone.t2", flags=omp(2))))
 
+# friction: the threads' cross-body pairs recorded, bounded and applied after the loop
+fr = {"dx": 0.25, "tend": 3.0, "friction": 0.3}
+SLAB = "oblique_slabs/in.oblique_slabs"
+fr0 = et.production_thermo(et.run(a, SLAB, fr, log="log.fric.t0"))
+compare("oblique slabs, friction 0.3: 2 threads vs none", fr0,
+        et.production_thermo(et.run(a, SLAB, fr, log="log.fric.t2", flags=omp(2))))
+
 # ---- three bodies: compute esph/contact per interface
 CR = "newton_cradle/in.newton_cradle"
 cr = {"dx": 0.25, "thermo_every": 50}
