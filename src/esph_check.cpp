@@ -60,6 +60,16 @@ void ESPHCheck::first_error(LAMMPS *lmp, tagint tag, const std::string &msg)
 
 /* ---------------------------------------------------------------------- */
 
+bool ESPHCheck::any_atom(LAMMPS *lmp, const std::function<bool(int)> &pred)
+{
+  int mine = 0, any = 0;
+  for (int i = 0; i < lmp->atom->nlocal && !mine; i++) mine = pred(i) ? 1 : 0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+  return any != 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
 template <typename T>
 static std::vector<T> union_all(LAMMPS *lmp, std::vector<T> v, MPI_Datatype type)
 {
@@ -721,11 +731,11 @@ void ESPHCheck::after_prediction(LAMMPS *lmp, ESPHState *st, Fix *fix_int)
   for (int k = 0; k < modify->nfix; k++) {
     Fix *f = modify->fix[k];
     if (f == fix_int || !(modify->fmask[k] & FixConst::POST_INTEGRATE)) continue;
-    int mine = 0, any = 0;
-    for (int i = 0; i < lmp->atom->nlocal && !mine; i++)
-      mine = (st->rmass[i] > 0.0) && (mask[i] & f->groupbit);
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, lmp->world);
-    if (any && lmp->comm->me == 0)
+    const int bit = f->groupbit;
+    const bool acts = any_atom(lmp, [&](int i) {
+      return st->rmass[i] > 0.0 && (mask[i] & bit);
+    });
+    if (acts && lmp->comm->me == 0)
       lmp->error->warning(FLERR,
                           "Fix {} ({}) changes positions or velocities of ESPH particles after "
                           "fix esph/integrate {} predicted the step (post_integrate): the force "

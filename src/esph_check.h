@@ -48,6 +48,9 @@ namespace ESPHCheck {
   // smallest atom ID
   void first_error(LAMMPS *lmp, tagint tag, const std::string &msg);
 
+  // collective: true if pred(i) holds for a local atom i on any rank
+  bool any_atom(LAMMPS *lmp, const std::function<bool(int)> &pred);
+
   // union over all ranks of the values in v (sorted, unique)
   std::vector<int> global_set(LAMMPS *lmp, std::vector<int> v);
   std::vector<long long> global_set(LAMMPS *lmp, std::vector<long long> v);

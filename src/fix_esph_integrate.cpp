@@ -423,12 +423,12 @@ void FixESPHIntegrate::check_deform()
   for (const auto &f : modify->get_fix_by_style("^deform")) {
     auto *fd = dynamic_cast<FixDeform *>(f);
     if (!fd || fd->remapflag != Domain::X_REMAP) continue;
-    int mine = 0;
-    for (int i = 0; i < atom->nlocal && !mine; i++)
-      if ((atom->mask[i] & groupbit) && (atom->mask[i] & f->groupbit)) mine = 1;
-    int any;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-    if (any && comm->me == 0)
+    const int *mask = atom->mask;
+    const int bits = groupbit, fbit = f->groupbit;
+    const bool acts = ESPHCheck::any_atom(lmp, [&](int i) {
+      return (mask[i] & bits) && (mask[i] & fbit);
+    });
+    if (acts && comm->me == 0)
       error->warning(FLERR,
                      "Fix deform {} remaps the positions of particles of fix esph/integrate {} "
                      "(remap x, the default) without their velocities: the solid does not feel "
