@@ -121,11 +121,26 @@ void ESPHState::ensure_cone(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+void ESPHState::ensure_fric(LAMMPS *lmp)
+{
+  // in restart files (a continued run is exact), not in data files (a run from a data file
+  // starts with no friction held)
+  if (!internal_fix_exists(lmp, FIX_ID_FRIC, "esph_fric"))
+    lmp->modify->add_fix(
+        fmt::format("{} all property/atom d2_esph_fric 3 writedata no", FIX_ID_FRIC));
+  if (!internal_fix_exists(lmp, FIX_ID_FRIC_USED, "esph_fric_used"))
+    lmp->modify->add_fix(
+        fmt::format("{} all property/atom d2_esph_fric_used 3 writedata no", FIX_ID_FRIC_USED));
+}
+
+/* ---------------------------------------------------------------------- */
+
 ESPHState::ESPHState(LAMMPS *_lmp) :
     rmass(nullptr), rho(nullptr), e(nullptr), h(nullptr), s(nullptr), n(nullptr), depth(nullptr),
     gap(nullptr), gapv(nullptr), eng(nullptr), body(nullptr), epsp(nullptr), alpha(nullptr),
-    drec(nullptr), drecu(nullptr), cone(nullptr), coneu(nullptr), lmp(_lmp), iepsp(-1), ialpha(-1),
-    idrec(-1), idrecu(-1), icone(-1), iconeu(-1)
+    drec(nullptr), drecu(nullptr), cone(nullptr), coneu(nullptr), fric(nullptr), fricu(nullptr),
+    lmp(_lmp), iepsp(-1), ialpha(-1), idrec(-1), idrecu(-1), icone(-1), iconeu(-1), ifric(-1),
+    ifricu(-1)
 {
   ensure(lmp);
   int flag, cols;
@@ -163,6 +178,9 @@ void ESPHState::clear_atom(int i)
   for (double **a : {drec, drecu, cone, coneu})
     if (a)
       for (int k = 0; k < 6; k++) a[i][k] = 0.0;
+  for (double **a : {fric, fricu})
+    if (a)
+      for (int k = 0; k < 3; k++) a[i][k] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -201,4 +219,8 @@ void ESPHState::fetch()
   iconeu = atom->find_custom("esph_cone_used", flag, cols);
   cone = (icone >= 0 && iconeu >= 0) ? atom->darray[icone] : nullptr;
   coneu = (icone >= 0 && iconeu >= 0) ? atom->darray[iconeu] : nullptr;
+  ifric = atom->find_custom("esph_fric", flag, cols);
+  ifricu = atom->find_custom("esph_fric_used", flag, cols);
+  fric = (ifric >= 0 && ifricu >= 0) ? atom->darray[ifric] : nullptr;
+  fricu = (ifric >= 0 && ifricu >= 0) ? atom->darray[ifricu] : nullptr;
 }

@@ -40,6 +40,9 @@
 //                  contact/normal cone), d2_esph_cone_used[6] the cone that computation used
 //                  (fix ESPH_CONE_USED: two fixes, so that data-file lines stay below
 //                  read_data's 256 characters)
+//   d2_esph_fric[3] static part of the friction force on a real particle found by the last
+//                  force computation (fix ESPH_FRIC, only with pair_style esph/solid friction),
+//                  d2_esph_fric_used[3] the one that computation used (fix ESPH_FRIC_USED)
 // The fix is created by the first ESPH style that needs it and is never deleted by them,
 // so redefining a pair style or fix keeps the state. It is restored by read_restart when
 // any ESPH style is defined again afterwards, and written by write_data.
@@ -61,6 +64,8 @@ class ESPHState {
   static constexpr const char *FIX_ID_RECON_USED = "ESPH_RECON_USED";
   static constexpr const char *FIX_ID_CONE = "ESPH_CONE";
   static constexpr const char *FIX_ID_CONE_USED = "ESPH_CONE_USED";
+  static constexpr const char *FIX_ID_FRIC = "ESPH_FRIC";
+  static constexpr const char *FIX_ID_FRIC_USED = "ESPH_FRIC_USED";
 
   // create the state fix if it does not exist yet
   static void ensure(LAMMPS *lmp);
@@ -81,6 +86,9 @@ class ESPHState {
   // create the normal-cone fix (d2_esph_cone) if it does not exist yet: only scenes with
   // pair_style esph/solid contact/normal cone carry it
   static void ensure_cone(LAMMPS *lmp);
+  // create the friction memory fix (d2_esph_fric) if it does not exist yet: only scenes with
+  // pair_style esph/solid friction carry it
+  static void ensure_fric(LAMMPS *lmp);
 
   // per-atom array pointers, to be re-fetched every step (they move when atoms grow)
   explicit ESPHState(LAMMPS *lmp);
@@ -99,12 +107,15 @@ class ESPHState {
   double **drecu;    // and the ones the last computation used (6 per atom)
   double **cone;     // normal cones of contact/normal cone found (6 per atom), nullptr without
   double **coneu;    // and the ones the last computation used (6 per atom)
+  double **fric;     // static part of the friction force on a real particle found (3 per atom,
+                     // force units), nullptr without friction
+  double **fricu;    // and the one the last computation used (3 per atom)
   int *body;
 
  private:
   LAMMPS *lmp;
   int irho, ie, ih, is, in, idepth, ibody, igap, igapv, ieng, iepsp, ialpha, idrec, idrecu, icone,
-      iconeu;
+      iconeu, ifric, ifricu;
 };
 
 }    // namespace LAMMPS_NS

@@ -61,8 +61,9 @@ PairESPHSolid::PairESPHSolid(LAMMPS *lmp) :
     rigid(nullptr), matset(nullptr), nmax(0), acc(nullptr), hq(nullptr), drho(nullptr), de(nullptr),
     dh(nullptr), ds(nullptr), dalpha(nullptr), bvel(nullptr), bspin(nullptr), xsph(nullptr),
     cpl(nullptr), acc_cols(A_NN), hq_cols(NHQ), qcol_b(-1), qcol_n(-1), qcol_d(-1), cone_keep(0),
-    recon_keep(0), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0), atom_contact(nullptr),
-    state(nullptr), fix_int(nullptr), spacing_lo(0.0), spacing_hi(0.0), nthreads(1)
+    fric_keep(0), recon_keep(0), nboundary(0), atom_contact_flag(0), atom_contact_nmax(0),
+    atom_contact(nullptr), state(nullptr), fix_int(nullptr), spacing_lo(0.0), spacing_hi(0.0),
+    nthreads(1)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -513,6 +514,7 @@ void PairESPHSolid::setup()
   dt_keep = normals_valid;
   recon_keep = normals_valid;
   cone_keep = normals_valid;
+  fric_keep = normals_valid;
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
@@ -705,6 +707,11 @@ void PairESPHSolid::stagger_save()
         g[7 + k] = state->cone[i][k];
         g[13 + k] = state->coneu[i][k];
       }
+    if (state->fric)
+      for (int k = 0; k < 3; k++) {
+        g[19 + k] = state->fric[i][k];
+        g[22 + k] = state->fricu[i][k];
+      }
   }
   stagger_flags[0] = normals_valid;
   stagger_flags[1] = dt_keep;
@@ -726,6 +733,11 @@ void PairESPHSolid::stagger_restore()
       for (int k = 0; k < 6; k++) {
         state->cone[i][k] = g[7 + k];
         state->coneu[i][k] = g[13 + k];
+      }
+    if (state->fric)
+      for (int k = 0; k < 3; k++) {
+        state->fric[i][k] = g[19 + k];
+        state->fricu[i][k] = g[22 + k];
       }
   }
   normals_valid = stagger_flags[0];
@@ -1000,7 +1012,10 @@ int PairESPHSolid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fl
     return m;
   }
   if (comm_stage == COMM_FRIC) {
-    for (int i = 0; i < n; i++) buf[m++] = acc[list[i]][A_FSUM];
+    for (int i = 0; i < n; i++) {
+      buf[m++] = acc[list[i]][A_FSUM];
+      for (int k = 0; k < 3; k++) buf[m++] = fric_held[list[i]][k];
+    }
     return m;
   }
   for (int i = 0; i < n; i++) {
@@ -1068,8 +1083,10 @@ void PairESPHSolid::unpack_forward_comm(int n, int first, double *buf)
   if (comm_stage == COMM_FRIC) {
     // (the slot of a boundary particle is one of its gap candidates': left alone)
     const double *rmass = state->rmass;
-    for (int i = first; i < last; i++, m++)
+    for (int i = first; i < last; i++, m += 4) {
       if (rmass[i] > 0.0) acc[i][A_FSUM] = buf[m];
+      for (int k = 0; k < 3; k++) fric_held[i][k] = buf[m + 1 + k];
+    }
     return;
   }
   for (int i = first; i < last; i++) {
@@ -1117,6 +1134,11 @@ int PairESPHSolid::pack_reverse_comm(int n, int first, double *buf)
     for (int i = first; i < last; i++) buf[m++] = acc[i][A_FSUM];
     return m;
   }
+  if (comm_stage == COMM_FRIC_FOUND) {
+    for (int i = first; i < last; i++)
+      for (int k = 0; k < 3; k++) buf[m++] = fric_found[i][k];
+    return m;
+  }
   if (comm_stage == COMM_COUPLE) {
     // (the rows of atoms without a couple hold nothing)
     for (int i = first; i < last; i++)
@@ -1162,6 +1184,11 @@ void PairESPHSolid::unpack_reverse_comm(int n, int *list, double *buf)
     const double *rmass = state->rmass;
     for (int i = 0; i < n; i++, m++)
       if (rmass[list[i]] > 0.0) acc[list[i]][A_FSUM] += buf[m];
+    return;
+  }
+  if (comm_stage == COMM_FRIC_FOUND) {
+    for (int i = 0; i < n; i++)
+      for (int k = 0; k < 3; k++) fric_found[list[i]][k] += buf[m++];
     return;
   }
   if (comm_stage == COMM_COUPLE) {

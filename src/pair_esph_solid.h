@@ -200,6 +200,7 @@ class PairESPHSolid : public Pair {
   int qcol_n;        // contact/normal cone: first column of the cone C_i (Voigt), or -1
   int qcol_d;        // visc/recon: Q_D, the strain rate D_i (Voigt) it uses, or -1
   int cone_keep;     // contact/normal cone: the same for the cones
+  int fric_keep;     // friction: the same for the static part of the friction
   int recon_keep;    // visc/recon: the next computation re-evaluates the last one: keep
                      // the strain rates that one used
   int comm_stage;
@@ -214,7 +215,7 @@ class PairESPHSolid : public Pair {
   int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
   // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
   std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth, cone
-  static constexpr int NGEOM = 19;
+  static constexpr int NGEOM = 25;
   int stagger_flags[2];
   void stagger_save();
   void stagger_restore();
@@ -248,13 +249,14 @@ class PairESPHSolid : public Pair {
   // an interacting cross-body pair whose friction friction_pass() applies: its particles
   // (j's rows written where jown), the Coulomb force mu |f_n| (force units), the slip
   // velocity v_t of i against j, the reduced mass (force units), the pair vector x_i - x_j,
+  // the contact normal,
   // mm = m_i m_j (force units), the share of the friction work heating the pair's two
   // particles' rows (1/2 each, 1 against a rigid particle) and the tally weight; rig: 0, or
   // 1 / 2 where i / j is rigid
   struct FricPair {
     int i, j, jown, rig;
     double fc, mred, mm, heat, wnet;
-    double vt[3], dx[3];
+    double vt[3], dx[3], nc[3];
   };
   // one pass of the pair loop: the neighbour list entries [iifrom, iito) it takes, the rows
   // it adds to (of acc, atom->f and atom_contact: the arrays themselves, or for a thread of
@@ -271,6 +273,10 @@ class PairESPHSolid : public Pair {
     std::vector<FricPair> *fric = nullptr;
   };
   std::vector<FricPair> fric_pairs;
+  // friction: per atom (owned and ghost) the static friction the computation uses, and the
+  // one it finds (friction_pass())
+  double **fric_held, **fric_found;
+  int fric_nmax;
   // friction: the force of each recorded pair bounded by the stop force of both its
   // particles' pairs together, then applied (forces, heating, couples, tallies)
   void friction_pass();

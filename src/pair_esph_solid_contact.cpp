@@ -517,24 +517,44 @@ void PairESPHSolid::atom_contact_clear()
 
 /* ----------------------------------------------------------------------
    friction (pair_style esph/solid friction mu): the recorded cross-body
-   pairs of this computation get the Coulomb force mu |f_n| against their
-   slip v_t, bounded so that the friction of all the pairs of a particle
-   together cannot reverse its slip: the pair's share f_c / F of the force
-   that stops the slip of the pair's reduced mass within STICK_STEPS steps,
-   F the sum of the Coulomb forces of the particle's pairs (A_FSUM), of
-   whichever of the two particles has the larger sum (against a rigid
-   particle, which does not move, the deformable one's). A bound per pair
-   (before 2026-12-07: 1/32 of the stop force) held the friction below
-   Coulomb's at high pressure while the bodies slid at tens of m/s, and no
-   per-pair share stops a particle with more pairs than it assumes
+   pairs of this computation get a tangential force of at most the Coulomb
+   force mu |f_n|, the sum of
+   - the static friction the pair held (its share f_c / F_i of the static
+     friction its particle i held at the last computation, F_i the sum of
+     the Coulomb forces of i's pairs (A_FSUM), the two particles' averaged),
+   - a spring on the slip of this step: the pair's share of the force that
+     would stop the slip of its reduced mass within SPRING_STEPS steps, kept
+     as static friction for the next computation, and
+   - a dashpot on the slip: the share of the force that would stop it within
+     STICK_STEPS steps, of the particle with the larger F (against a rigid
+     particle, which does not move, the deformable one's).
+   The pairs of a particle together thus stop its slip without reversing it,
+   and hold a tangential load once it has stopped (without the static part
+   a held load was carried at a steady creep of 4 dt tau / (rho dx)). Where
+   the Coulomb force caps the sum, the pair slides and the force it keeps is
+   the capped one
 ------------------------------------------------------------------------- */
 
 void PairESPHSolid::friction_pass()
 {
-  // the sums of the owners, then theirs at the ghosts (all ranks take part)
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > fric_nmax) {
+    fric_nmax = atom->nmax;
+    memory->destroy(fric_held);
+    memory->destroy(fric_found);
+    memory->create(fric_held, fric_nmax, 3, "pair:fric_held");
+    memory->create(fric_found, fric_nmax, 3, "pair:fric_found");
+  }
+  // the static friction the owned particles held (none where the state does not hold it)
+  double **held = state->fricu;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) fric_held[i][k] = held ? held[i][k] : 0.0;
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < 3; k++) fric_found[i][k] = 0.0;
+  // the Coulomb sums of the owners, then theirs and the static friction at the ghosts
   comm_stage = COMM_FRIC;
   if (force->newton_pair) comm->reverse_comm(this, 1);
-  comm->forward_comm(this, 1);
+  comm->forward_comm(this, 4);
 
   double **f = atom->f;
   const double *rmass = state->rmass;
@@ -543,29 +563,59 @@ void PairESPHSolid::friction_pass()
   const double dt = dt_step;
   for (const FricPair &p : fric_pairs) {
     const int i = p.i, j = p.j;
-    const double vtm = sqrt(p.vt[0] * p.vt[0] + p.vt[1] * p.vt[1] + p.vt[2] * p.vt[2]);
-    const double fsum = (p.rig == 1) ? acc[j][A_FSUM]
-        : (p.rig == 2)               ? acc[i][A_FSUM]
-                                     : std::max(acc[i][A_FSUM], acc[j][A_FSUM]);
-    const double fstop = p.mred * vtm / (STICK_STEPS * dt);
-    const double ft = (fstop < fsum) ? p.fc * fstop / fsum : p.fc;
-    const double s = ft / vtm;
-    const double ff[3] = {-s * p.vt[0], -s * p.vt[1], -s * p.vt[2]};
-    // the work ft |v_t| heats the pair (acc's viscous heating slot: per unit of m_i m_j)
-    const double hw = p.heat * ft * vtm / p.mm;
-    for (int a = 0; a < 3; a++) f[i][a] += ff[a];
+    const double fsi = acc[i][A_FSUM], fsj = acc[j][A_FSUM];
+    // the static friction held, the pair's shares of its particles', in the tangent plane
+    double st[3];
+    for (int a = 0; a < 3; a++) {
+      const double si = p.fc / fsi * fric_held[i][a], sj = p.fc / fsj * fric_held[j][a];
+      st[a] = (p.rig == 1) ? -sj : (p.rig == 2) ? si : 0.5 * (si - sj);
+    }
+    const double stn = st[0] * p.nc[0] + st[1] * p.nc[1] + st[2] * p.nc[2];
+    // the force per unit slip velocity that stops the pair's share of the slip in one step
+    const double fsum = (p.rig == 1) ? fsj : (p.rig == 2) ? fsi : std::max(fsi, fsj);
+    const double cstop = p.fc * p.mred / (fsum * dt);
+    double ft[3], fs[3];
+    for (int a = 0; a < 3; a++) {
+      fs[a] = st[a] - stn * p.nc[a] - cstop / SPRING_STEPS * p.vt[a];
+      ft[a] = fs[a] - cstop / STICK_STEPS * p.vt[a];
+    }
+    // Coulomb: mu |f_n| at most; sliding, the capped force is what the pair keeps
+    const double ft2 = ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2];
+    if (ft2 > p.fc * p.fc) {
+      const double cap = p.fc / sqrt(ft2);
+      for (int a = 0; a < 3; a++) fs[a] = ft[a] *= cap;
+    }
+    // the work of the friction on the slip heats the pair (acc's viscous heating slot: per
+    // unit of m_i m_j): dissipated by the dashpot and the sliding, stored and returned by
+    // the static part
+    const double hw = -p.heat * (ft[0] * p.vt[0] + ft[1] * p.vt[1] + ft[2] * p.vt[2]) / p.mm;
+    for (int a = 0; a < 3; a++) {
+      f[i][a] += ft[a];
+      fric_found[i][a] += fs[a];
+    }
     acc[i][A_AVHEAT] += rmass[j] * hw;
     if (p.jown) {
-      for (int a = 0; a < 3; a++) f[j][a] -= ff[a];
+      for (int a = 0; a < 3; a++) {
+        f[j][a] -= ft[a];
+        fric_found[j][a] -= fs[a];
+      }
       acc[j][A_AVHEAT] += rmass[i] * hw;
     }
     if (couple) {
       double t[3];
       for (int a = 0; a < 3; a++)
-        t[a] = -(p.dx[(a + 1) % 3] * ff[(a + 2) % 3] - p.dx[(a + 2) % 3] * ff[(a + 1) % 3]);
+        t[a] = -(p.dx[(a + 1) % 3] * ft[(a + 2) % 3] - p.dx[(a + 2) % 3] * ft[(a + 1) % 3]);
       add_couple(acc[i], p.jown ? acc[j] : nullptr, t);
     }
     auto &tb = tally_bodies(body_tally, body[i], body[j]);
-    for (int a = 0; a < 3; a++) tb[3 + a] += p.wnet * ff[a];
+    for (int a = 0; a < 3; a++) tb[3 + a] += p.wnet * ft[a];
   }
+  // the static friction found, summed at the owners, for the next computation
+  if (force->newton_pair) {
+    comm_stage = COMM_FRIC_FOUND;
+    comm->reverse_comm(this, 3);
+  }
+  if (state->fric)
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 3; k++) state->fric[i][k] = fric_found[i][k];
 }

@@ -422,9 +422,8 @@ void PairESPHSolid::pair_loop(LoopOut &out)
           if (FRIC) {
             // Coulomb friction mu |f_n| against the slip: recorded, and applied by
             // friction_pass() once the Coulomb forces of every particle's pairs are summed
-            const double vt2 = vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2];
             const double fc = -friction * fn;
-            if (vt2 > 0.0 && fc > 0.0) {
+            if (fc > 0.0) {
               // (the pair's reduced mass; against a rigid particle, which does not move,
               // the deformable one's mass; the friction work heats the deformable one alone
               // against a rigid body, which has no internal energy)
@@ -432,10 +431,11 @@ void PairESPHSolid::pair_loop(LoopOut &out)
               const double mred = rig ? (ri ? mj : mi) * fconv : mm / (mi + mj);
               const double wnet =
                   ((newton_pair || j < nlocal) ? 1.0 : 0.5) * ((bi < body[j]) ? 1.0 : -1.0);
-              FricPair fp{i, j, jown, rig, fc, mred, mm, rig ? 1.0 : 0.5, wnet, {}, {}};
+              FricPair fp{i, j, jown, rig, fc, mred, mm, rig ? 1.0 : 0.5, wnet, {}, {}, {}};
               for (int a = 0; a < 3; a++) {
                 fp.vt[a] = vt[a];
                 fp.dx[a] = dx[a];
+                fp.nc[a] = nc[a];
               }
               out.fric->push_back(fp);
               acc[i][A_FSUM] += fc;

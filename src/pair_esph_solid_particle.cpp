@@ -218,6 +218,14 @@ void PairESPHSolid::hoist()
     });
   }
   cone_keep = 0;
+  // friction: the static friction found by the last computation becomes the one this one
+  // uses (unless it re-evaluates the last computation)
+  if (state->fric && !fric_keep)
+    ESPH::for_chunks(nthreads, nlocal, [=](int from, int to, int) {
+      for (int i = from; i < to; i++)
+        for (int k = 0; k < 3; k++) state->fricu[i][k] = state->fric[i][k];
+    });
+  fric_keep = 0;
   dt_cfl = BIG_DT;
   for (int t = 0; t < nthreads; t++) {
     if (nonfinite[t] >= 0) {

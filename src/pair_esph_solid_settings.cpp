@@ -80,6 +80,8 @@ void PairESPHSolid::set_defaults()
   xsph_flag = 0;
   xsph_eps = 0.0;
   friction = 0.0;
+  fric_held = fric_found = nullptr;
+  fric_nmax = 0;
   simd_set = 1;
 }
 
@@ -101,6 +103,8 @@ PairESPHSolid::~PairESPHSolid()
   memory->destroy(xsph);
   memory->destroy(cpl);
   memory->destroy(atom_contact);
+  memory->destroy(fric_held);
+  memory->destroy(fric_found);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -411,6 +415,8 @@ void PairESPHSolid::settings(int narg, char **arg)
   // and the normal cones (carried from one force computation to the next; made here, before
   // a read_data that names their sections)
   if (cone_flag && contact == CONTACT_SOLID) ESPHState::ensure_cone(lmp);
+  // and the static part of the friction (the same)
+  if (friction > 0.0 && contact != CONTACT_OFF) ESPHState::ensure_fric(lmp);
   if (contact == CONTACT_PAPER && alpha == 0.0 && comm->me == 0)
     error->warning(FLERR,
                    "Pair esph/solid contact paper with visc alpha 0: the paper's gate (only "

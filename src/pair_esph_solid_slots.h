@@ -80,9 +80,12 @@ static constexpr int EXTRA_CONE = 32;    // contact/normal cone alone (the frict
 // friction: the Coulomb forces of all the cross-body pairs of a real particle, summed by
 // the pair loop in this slot (unused otherwise by real particles) for friction_pass()
 static constexpr int A_FSUM = 31;
-// the friction of a particle's pairs together never exceeds the force that would stop their
-// slip within STICK_STEPS steps, so that they cannot reverse it (friction_pass())
+// friction (friction_pass()): the dashpot of a particle's pairs together stops their slip
+// within STICK_STEPS steps, so that they cannot reverse it (one step is unstable on the
+// network of pairs: +89 % energy on sticking slabs); their spring would stop it within
+// SPRING_STEPS steps (its period about 2 pi sqrt(SPRING_STEPS) steps)
 static constexpr double STICK_STEPS = 2.0;
+static constexpr double SPRING_STEPS = 16.0;
 // boundary particles
 static constexpr int B_A = 0;        // 0..8: sum_p V_p v_p (x) grad_k W_kp
 static constexpr int B_B = 9;        // 9..11: sum_p V_p grad_k W_kp
@@ -130,7 +133,8 @@ enum {
   COMM_CORR,
   COMM_COUPLE,
   COMM_TOUCH,
-  COMM_FRIC
+  COMM_FRIC,
+  COMM_FRIC_FOUND
 };
 
 static constexpr double BIG_DT = 1.0e300;
