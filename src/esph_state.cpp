@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 using namespace LAMMPS_NS;
 
@@ -58,6 +59,18 @@ void ESPHState::ensure(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+// a pair of optional internal fixes with a per-atom array d2_<name>[cols] each: what the
+// last computation found, and (d2_<name>_used) what it used; in data files or not
+static void ensure_pair(LAMMPS *lmp, const char *id, const char *id_used, const std::string &name,
+                        int cols, bool writedata)
+{
+  const std::string wd = writedata ? "" : " writedata no";
+  for (const auto &f : {std::make_pair(id, name), std::make_pair(id_used, name + "_used")})
+    if (!internal_fix_exists(lmp, f.first, f.second.c_str()))
+      lmp->modify->add_fix(
+          fmt::format("{} all property/atom d2_{} {}{}", f.first, f.second, cols, wd));
+}
+
 // an optional internal fix with one per-atom double d_<name>, created once
 static void ensure_optional(LAMMPS *lmp, const char *id, const char *name)
 {
@@ -84,12 +97,7 @@ void ESPHState::ensure_recon(LAMMPS *lmp)
   // the strain rates of the last computation: in restart files (a continued run is exact),
   // not in data files (read_data needs only the three state sections; a run from a data
   // file starts with zero rates, the paper's viscosity in its first computation)
-  if (!internal_fix_exists(lmp, FIX_ID_RECON, "esph_drec"))
-    lmp->modify->add_fix(
-        fmt::format("{} all property/atom d2_esph_drec 6 writedata no", FIX_ID_RECON));
-  if (!internal_fix_exists(lmp, FIX_ID_RECON_USED, "esph_drec_used"))
-    lmp->modify->add_fix(
-        fmt::format("{} all property/atom d2_esph_drec_used 6 writedata no", FIX_ID_RECON_USED));
+  ensure_pair(lmp, FIX_ID_RECON, FIX_ID_RECON_USED, "esph_drec", 6, false);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -113,10 +121,7 @@ void ESPHState::drop_recon(LAMMPS *lmp)
 
 void ESPHState::ensure_cone(LAMMPS *lmp)
 {
-  if (!internal_fix_exists(lmp, FIX_ID_CONE, "esph_cone"))
-    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone 6", FIX_ID_CONE));
-  if (!internal_fix_exists(lmp, FIX_ID_CONE_USED, "esph_cone_used"))
-    lmp->modify->add_fix(fmt::format("{} all property/atom d2_esph_cone_used 6", FIX_ID_CONE_USED));
+  ensure_pair(lmp, FIX_ID_CONE, FIX_ID_CONE_USED, "esph_cone", 6, true);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -125,12 +130,7 @@ void ESPHState::ensure_fric(LAMMPS *lmp)
 {
   // in restart files (a continued run is exact), not in data files (a run from a data file
   // starts with no friction held)
-  if (!internal_fix_exists(lmp, FIX_ID_FRIC, "esph_fric"))
-    lmp->modify->add_fix(
-        fmt::format("{} all property/atom d2_esph_fric 3 writedata no", FIX_ID_FRIC));
-  if (!internal_fix_exists(lmp, FIX_ID_FRIC_USED, "esph_fric_used"))
-    lmp->modify->add_fix(
-        fmt::format("{} all property/atom d2_esph_fric_used 3 writedata no", FIX_ID_FRIC_USED));
+  ensure_pair(lmp, FIX_ID_FRIC, FIX_ID_FRIC_USED, "esph_fric", 3, false);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -1230,6 +1230,9 @@ double PairESPHSolid::memory_usage()
   if (dalpha) bytes += (double) nmax * sizeof(double);
   bytes += (double) atom_contact_nmax * 2 * sizeof(double);
   bytes += (double) (touch_mark.capacity() + touch_frame.capacity()) * sizeof(double);
+  // friction: the static friction held and found, the recorded cross-body pairs
+  bytes +=
+      (double) fric_nmax * 6 * sizeof(double) + (double) fric_pairs.capacity() * sizeof(FricPair);
   // the vector pass: the scalar loop's split list (the full list is counted by the
   // neighbor lists; its rows are hq's)
   bytes += (double) (simd_first.capacity() + simd_j.capacity() + simd_nbulk.capacity() +

@@ -214,7 +214,8 @@ class PairESPHSolid : public Pair {
   double dt_step;       // time step of the step of this force computation (gap forecast)
   int dt_keep;          // the next computation re-evaluates the last one: keep dt_step
   // fix esph/integrate scheme staggered: what the rate pass must leave as it found it
-  std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth, cone
+  std::vector<double> stagger_f, stagger_geom;    // forces; n, gap, gapv, eng, depth, cone,
+                                                  // friction
   static constexpr int NGEOM = 25;
   int stagger_flags[2];
   void stagger_save();
@@ -247,12 +248,11 @@ class PairESPHSolid : public Pair {
   int nthreads;    // threads of the per-atom passes and the pair loop (1; /omp: package omp)
 
   // an interacting cross-body pair whose friction friction_pass() applies: its particles
-  // (j's rows written where jown), the Coulomb force mu |f_n| (force units), the slip
-  // velocity v_t of i against j, the reduced mass (force units), the pair vector x_i - x_j,
-  // the contact normal,
-  // mm = m_i m_j (force units), the share of the friction work heating the pair's two
-  // particles' rows (1/2 each, 1 against a rigid particle) and the tally weight; rig: 0, or
-  // 1 / 2 where i / j is rigid
+  // (j's rows written where jown; rig: 0, or 1 / 2 where i / j is rigid), the Coulomb force
+  // mu |f_n| (force units), the reduced mass (force units), mm = m_i m_j (force units), the
+  // share of the friction work heating the pair's two particles' rows (1/2 each, 1 against
+  // a rigid particle), the tally weight, the slip velocity v_t of i against j, the pair
+  // vector x_i - x_j and the contact normal
   struct FricPair {
     int i, j, jown, rig;
     double fc, mred, mm, heat, wnet;
