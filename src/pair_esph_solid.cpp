@@ -518,6 +518,11 @@ void PairESPHSolid::setup()
   state->fetch();
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
+  // a run without friction releases the static friction a run with it held (friction given
+  // again later starts from none)
+  if (state->fric && !(friction > 0.0 && contact != CONTACT_OFF))
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 3; k++) state->fric[i][k] = state->fricu[i][k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (state->rho[i] == 0.0) state->rho[i] = eos[type[i]].rho0;
     if (state->h[i] == 0.0) state->h[i] = h0;
