@@ -174,6 +174,28 @@ acc = slope(th, "c_vB[1]", 8.0, 20.0)
 c.near("incline above atan(mu): acceleration of B [m/s^2]", acc, G * (0.5 - 0.3),
        0.02 * G * (0.5 - 0.3), "g (tan a - mu) while sliding (2 %: the load oscillation)")
 
+# a run without friction releases the static friction held: friction given again later
+# starts from none (not from the old load, a jolt of up to mu |f_n| per pair)
+RELEASE = """include in.friction_block
+variable fx atom abs(d2_esph_fric[1])
+compute fm all reduce max v_fx
+run 0 post no
+print "HELD with=$(c_fm:%.6g)"
+pair_style esph/solid ${h}
+pair_coeff * * rho0 ${rho0} shear ${G} eos mie/gruneisen ${c0} 1.92 1.69
+run 0 post no
+print "RELEASED without=$(c_fm:%.6g)"
+"""
+with open(os.path.join(work, "in.release"), "w") as fh:
+    fh.write(RELEASE)
+text = et.run(a, os.path.join(work, "in.release"), {"mu": 0.3, "v0": 0.0, "tana": 0.15,
+                                                    "tend": 8.0}, log="log.release")
+held = {**et.summary(text, "HELD"), **et.summary(text, "RELEASED")}
+print(f"INFO static friction held before / after a run without friction: {held}")
+c.less("stuck slabs: static friction held [N]", -held["with"], -1e-3,
+       "the load is held (about 0.3 N per interface particle)")
+c.true("a run without friction releases it", held["without"] == 0.0, "exactly 0")
+
 # ---------- 4. MPI ----------
 l1 = et.run(a, SLAB, {"dx": 0.25, "tend": 3.0, "friction": 0.3}, log="log.np1")
 l2 = et.run(a, SLAB, {"dx": 0.25, "tend": 3.0, "friction": 0.3}, np=2, log="log.np2")
